@@ -10,9 +10,10 @@ jobs=$(nproc)
 
 configure() {  # dir, meson args...
   local dir=$1
+  mkdir -p "$dir"
   shift
   if [[ ! -f "$dir/build.ninja" ]]; then
-    meson setup "$dir" "$@" >"$dir.setup.log" 2>&1 || { cat "$dir.setup.log"; return 1; }
+    meson setup "$dir" "$@" >"$dir/rstruct-setup.log" 2>&1 || { cat "$dir/rstruct-setup.log"; return 1; }
   fi
 }
 
@@ -24,16 +25,16 @@ run_suite() {  # dir, label, extra meson test args...
   local dir=$1 label=$2
   shift 2
   echo "== $label: building" >&2
-  if ! ninja -C "$dir" -j "$jobs" >"$dir.build.log" 2>&1; then
-    tail -40 "$dir.build.log"
+  if ! ninja -C "$dir" -j "$jobs" >"$dir/rstruct-build.log" 2>&1; then
+    tail -40 "$dir/rstruct-build.log"
     echo "== $label: BUILD FAILED" >&2
     total_fail=$((total_fail + 1))
     status=1
     return
   fi
   echo "== $label: testing" >&2
-  meson test -C "$dir" --num-processes "$jobs" --print-errorlogs "$@" >"$dir.test.log" 2>&1 || status=1
-  grep -E '^ *[0-9]+/[0-9]+ ' "$dir.test.log" | sed "s/^/[$label] /"
+  meson test -C "$dir" --num-processes "$jobs" --print-errorlogs "$@" >"$dir/rstruct-test.log" 2>&1 || status=1
+  grep -E '^ *[0-9]+/[0-9]+ ' "$dir/rstruct-test.log" | sed "s/^/[$label] /"
   local counts
   counts=$(python3 - "$dir/meson-logs/testlog.json" <<'PY'
 import json, sys
@@ -58,7 +59,7 @@ PY
   read -r p f <<<"$counts"
   total_pass=$((total_pass + p))
   total_fail=$((total_fail + f))
-  ((f == 0)) || { status=1; grep -A30 -E 'FAIL|ERROR' "$dir.test.log" | head -120; }
+  ((f == 0)) || { status=1; grep -A30 -E 'FAIL|ERROR' "$dir/rstruct-test.log" | head -120; }
 }
 
 configure build-test --buildtype=debugoptimized -Dchecks=expensive -Dbench=true || status=1
