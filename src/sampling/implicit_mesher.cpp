@@ -53,7 +53,9 @@ struct Grid {
 /// Builds the mesh one cube layer at a time, creating one vertex per crossed grid edge.
 class Mesher {
  public:
-  Mesher(const Surface& surface, const Grid& grid) : surface_(surface), grid_(grid) {}
+  Mesher(const Surface& surface, const Grid& grid) : surface_(surface), grid_(grid) {
+    edges_.reserve(1 << 16);
+  }
 
   TriangleMesh run() {
     std::vector<double> below = layer(0);
