@@ -108,6 +108,7 @@ void subgradient(const Instance& inst, LagrangianState& state, const Subgradient
   double lambda = 0.1;
   double window_max = -std::numeric_limits<double>::infinity();
   double window_min = std::numeric_limits<double>::infinity();
+  double previous_window_max = -std::numeric_limits<double>::infinity();
   std::vector<double> s(m);
   const std::int32_t heuristic_every = std::max(10, options.max_iterations / 25);
   double last_best = state.bound;
@@ -141,8 +142,13 @@ void subgradient(const Instance& inst, LagrangianState& state, const Subgradient
     window_min = std::min(window_min, value);
     if (it % kStepWindow == 0) {
       const double spread = (window_max - window_min) / std::max(1e-12, std::abs(window_max));
-      if (spread > 0.01) lambda /= 2.0;
-      else if (spread < 0.001) lambda *= 1.5;
+      // CFT's rule, plus: a window whose last value is its maximum is steady progress, not
+      // oscillation, so the step may grow.
+      // A window that does not beat the previous one's maximum is stalling (often a
+      // two-cycle), so the step shrinks.
+      if (spread > 0.01 || window_max <= previous_window_max) lambda /= 2.0;
+      else if (spread < 0.001 || value >= window_max) lambda *= 1.5;
+      previous_window_max = window_max;
       window_max = -std::numeric_limits<double>::infinity();
       window_min = std::numeric_limits<double>::infinity();
     }
@@ -162,7 +168,7 @@ void subgradient(const Instance& inst, LagrangianState& state, const Subgradient
     if (it % 100 == 0) {
       stall = state.bound > last_best + 1e-4 * std::max(1.0, std::abs(last_best)) ? 0 : stall + 1;
       last_best = state.bound;
-      if (stall >= 3 || lambda < 1e-6) break;
+      if (stall >= 30 || lambda < 1e-6) break;
     }
   }
   if (use_core) price();

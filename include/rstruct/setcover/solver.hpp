@@ -26,7 +26,7 @@ struct SolverOptions {
   /// Local-search iterations over all components (0: no limit besides time).
   std::int64_t max_local_search_iterations = 0;
   /// Subgradient iterations per component.
-  std::int32_t max_subgradient_iterations = 3000;
+  std::int32_t max_subgradient_iterations = 10000;
   /// Presolve with row and column domination (forced columns are always taken).
   bool use_domination = true;
 };
