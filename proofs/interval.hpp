@@ -125,9 +125,12 @@ using Objective = std::function<Eval(const Box&)>;
 /// bisected along their widest coordinate (widths measured relative to `scale`, one entry
 /// per coordinate). Stops when upper - lower <= tol, when no box is left, or after
 /// max_boxes evaluations. The returned enclosure always contains the true minimum (if the
-/// feasible set is non-empty); `point` is the best feasible midpoint found.
+/// feasible set is non-empty); `point` is the best feasible midpoint found. `witness`, if
+/// given, encloses f at a feasible point known to the caller (e.g. the paper's extreme
+/// configuration): it seeds the upper bound, so boxes that cannot beat it are pruned at once.
 inline BnbResult minimize(const Objective& f, const Box& box, double tol, long max_boxes,
-                          std::vector<double> scale = {}) {
+                          std::vector<double> scale = {},
+                          const Interval* witness = nullptr) {
   if (scale.empty()) scale.assign(box.size(), 1.0);
   struct Node {
     double key;
@@ -138,6 +141,7 @@ inline BnbResult minimize(const Objective& f, const Box& box, double tol, long m
   std::priority_queue<Node> queue;
   BnbResult result;
   Real best_upper = std::numeric_limits<double>::infinity();
+  if (witness != nullptr) best_upper = hi(*witness);
   auto try_midpoint = [&](const Box& b) {
     Box mid;
     std::vector<double> pt;
@@ -167,7 +171,7 @@ inline BnbResult minimize(const Objective& f, const Box& box, double tol, long m
     if (lo(n.value) > best_upper) continue;
     try_midpoint(n.box);
     if (best_upper - lo(n.value) <= tol || result.boxes >= max_boxes) {
-      lower = lo(n.value);
+      lower = Real(n.key);  // every queued box has key >= n.key: a global lower bound
       result.converged = result.boxes < max_boxes;
       break;
     }
@@ -196,13 +200,16 @@ inline BnbResult minimize(const Objective& f, const Box& box, double tol, long m
 
 /// max f = -min(-f).
 inline BnbResult maximize(const Objective& f, const Box& box, double tol, long max_boxes,
-                          std::vector<double> scale = {}) {
+                          std::vector<double> scale = {},
+                          const Interval* witness = nullptr) {
   Objective neg = [&f](const Box& b) {
     Eval e = f(b);
     e.value = -e.value;
     return e;
   };
-  BnbResult r = minimize(neg, box, tol, max_boxes, std::move(scale));
+  Interval neg_witness = witness != nullptr ? Interval(-*witness) : Interval(0);
+  BnbResult r = minimize(neg, box, tol, max_boxes, std::move(scale),
+                         witness != nullptr ? &neg_witness : nullptr);
   r.extremum = -r.extremum;
   return r;
 }
