@@ -55,3 +55,41 @@ inline Interval a1b_closed_form(const Interval& a, const Interval& theta) {
 inline Interval a1b_lipschitz(const Interval& a, const Interval& c) { return c / (1 - a - c); }
 
 }  // namespace rstruct::proofs
+
+namespace rstruct::proofs {
+
+/// Lemma A.2 (= 5.3), the paper's Figure 14 with lfs(v^) = 1. v lies on the sphere of a polar
+/// ball B_q (radius rho), at distance d from its nearest surface point v^; the medial ball D
+/// of v^ on the other side has centre c on the normal line, radius R_c >= 1, so
+/// |c - v| = R_c + d. [ACK01, Lemma 17] (imported): B_q and D meet at an angle <= beta0, i.e.
+/// |c - q|^2 >= rho^2 + R_c^2 + 2 rho R_c cos(beta0). The deviation phi of B_q's normal at v
+/// from the surface normal is pi - angle(c v q), largest when |c - q| is smallest:
+/// cos(angle cvq) <= C = (2 d + d^2 w - 2 rho cos(beta0)) / (2 rho (1 + d w)), w = 1/R_c.
+/// The exterior angle between two such balls is >= pi - 2 phi = 2 acos(C) - pi.
+inline Interval a2_cos_bound(const Interval& d, const Interval& w, const Interval& rho,
+                             const Interval& beta0) {
+  return (2 * d + d * d * w - 2 * rho * cos(beta0)) / (2 * rho * (1 + d * w));
+}
+inline Interval a2_exterior_angle(const Interval& c) { return 2 * acos_u(c) - pi(); }
+
+/// min over d in [0, d_max], R_c >= 1, rho >= (1 - d) * factor of the exterior angle (B&B;
+/// rho = (1 - d) factor / u with u in (0, 1]). Seeded with the point d = d_max, R_c = 1,
+/// rho = (1 - d_max) factor. Returns the enclosure of the maximal cosine C.
+inline BnbResult a2_max_cos(const Interval& d_max, const Interval& factor,
+                            const Interval& beta0) {
+  Objective f = [&](const Box& b) {
+    // a2_cos_bound with 1/rho = u / ((1 - d) factor), written so each variable occurs few
+    // times (less interval over-estimation).
+    const Interval& d = b[0];
+    const Interval& w = b[1];
+    const Interval& u = b[2];
+    Interval one_dw = 1 + d * w;
+    return Eval{(2 * d + d * d * w) * u / (2 * (1 - d) * factor * one_dw) - cos(beta0) / one_dw,
+                Feasible::kAll};
+  };
+  Interval witness = a2_cos_bound(d_max, Interval(1), (1 - d_max) * factor, beta0);
+  Box box{Interval(Real(0), hi(d_max)), hull(0, 1), hull(0, 1)};
+  return maximize(f, box, 1e-10, 200000, {}, &witness);
+}
+
+}  // namespace rstruct::proofs
