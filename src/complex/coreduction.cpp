@@ -10,10 +10,15 @@
 //    on boundaries, v is not a boundary, and the exact sequence of the pair ({v}, S) gives
 //    H(S) = H(S \ v) ⊕ Z₂ in degree 0.
 // Cells whose count of remaining faces drops to one are queued when it happens; counts
-// only decrease, so when the queue is empty no remaining cell has exactly one face.
+// only decrease, so when the queue is empty no remaining cell has exactly one face. The
+// queue is first in, first out: grown breadth-first from a removed vertex, the removed
+// edges leave triangles with two removed edges around it, so coreductions sweep across
+// triangles and tetrahedra too; depth-first order builds path-like trees that leave most
+// triangles with two faces and the reduction with most of the complex.
 
 #include <algorithm>
 #include <cstdint>
+#include <deque>
 
 #include "complex/z2_reduction.hpp"
 #include "rstruct/complex/coface_index.hpp"
@@ -38,8 +43,8 @@ class Coreducer {
     std::size_t next_vertex = 0;
     for (;;) {
       while (!queue_.empty()) {
-        const auto [d, i] = queue_.back();
-        queue_.pop_back();
+        const auto [d, i] = queue_.front();
+        queue_.pop_front();
         if (!alive_[d][i] || remaining_faces_[d][i] != 1) continue;
         const SimplexIndex f = alive_face(d, i);
         remove(d, i);
@@ -101,7 +106,7 @@ class Coreducer {
   CofaceIndex cofaces_;
   std::array<std::vector<std::uint8_t>, 4> alive_;
   std::array<std::vector<std::uint8_t>, 4> remaining_faces_;
-  std::vector<std::pair<int, SimplexIndex>> queue_;
+  std::deque<std::pair<int, SimplexIndex>> queue_;
 };
 
 }  // namespace
