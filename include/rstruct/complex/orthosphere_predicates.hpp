@@ -1,0 +1,58 @@
+#pragma once
+/// \file
+/// Exact predicates on the smallest orthogonal sphere of a simplex of weighted points, the
+/// two decisions of the dual complex (weighted α-shape at α = 0; Edelsbrunner, "The union
+/// of balls and its dual shape", DCG 13 (1995); DESIGN.md §4).
+///
+/// For affinely independent weighted points σ = {(c₀, w₀), …, (c_k, w_k)}, k ≤ 3, let z_σ
+/// be the point of aff(c₀, …, c_k) with equal power π_i(z) = |z − c_i|² − w_i to all of
+/// them (the centre of the smallest sphere orthogonal to all of them). Writing
+/// u_i = c_i − c₀, b_i = |u_i|² − w_i + w₀ (i = 1..k), G the Gram matrix of the u_i and
+/// D = det G > 0:
+///   π_σ(z_σ)            = (bᵀ adj(G) b − 4 D w₀) / (4 D),
+///   π_p(z_σ) − π_σ(z_σ) = (D b_p − g_pᵀ adj(G) b) / D,  g_p = (⟨u_i, c_p − c₀⟩)_i,
+///                         b_p = |c_p − c₀|² − w_p + w₀.
+/// Both signs are decided exactly: a floating-point evaluation with a certified error bound
+/// first, then exact rational (GMP) evaluation of the same polynomial. No perturbation:
+/// the dual complex at α = 0 is a well-defined geometric object, ties included.
+///
+/// These live in the complex module because the shared filtered/exact facility of
+/// `numeric/` had not landed when they were written.
+
+#include <cstdint>
+#include <span>
+
+#include "rstruct/geometry/vec3.hpp"
+#include "rstruct/predicates/sign.hpp"
+
+namespace rstruct::complex {
+
+/// Sign of π_σ(z_σ), the power of the smallest orthosphere's centre (minus its squared
+/// radius): negative or zero iff that orthosphere has a real, non-negative radius.
+/// For k = 0 it is the sign of −w₀.
+/// \pre 1 ≤ sigma.size() ≤ 4, points affinely independent.
+/// \throws InvalidInput if the points are affinely dependent (D = 0).
+Sign orthosphere_power_sign(std::span<const WeightedPoint> sigma);
+
+/// Sign of π_p(z_σ) − π_σ(z_σ): negative iff p is *closer in power* to z_σ than σ's
+/// points, i.e. z_σ lies outside the half-space of σ's dual face towards p (p "attaches"
+/// σ when σ ∪ {p} is a simplex of the regular triangulation).
+/// \pre 1 ≤ sigma.size() ≤ 3, points affinely independent.
+/// \throws InvalidInput if the points of sigma are affinely dependent.
+Sign orthosphere_attachment_sign(std::span<const WeightedPoint> sigma, const WeightedPoint& p);
+
+/// The same signs from exact rational arithmetic only (no filter): the oracle of the
+/// filter tests.
+Sign orthosphere_power_sign_exact(std::span<const WeightedPoint> sigma);
+Sign orthosphere_attachment_sign_exact(std::span<const WeightedPoint> sigma,
+                                       const WeightedPoint& p);
+
+/// How often each stage decided (process-wide, relaxed atomics).
+struct OrthospherePredicateCounters {
+  std::uint64_t filtered = 0;
+  std::uint64_t exact = 0;
+};
+OrthospherePredicateCounters orthosphere_predicate_counters();
+void reset_orthosphere_predicate_counters();
+
+}  // namespace rstruct::complex

@@ -1,0 +1,131 @@
+#include "rstruct/complex/dual_complex.hpp"
+
+#include <string>
+
+#include "rstruct/complex/coface_index.hpp"
+#include "rstruct/complex/orthosphere_predicates.hpp"
+#include "rstruct/core/error.hpp"
+
+namespace rstruct::complex {
+namespace {
+
+/// The vertex of `coface` (sorted tuple) that is not in `face` (sorted, one shorter).
+template <std::size_t K>
+VertexId opposite_vertex(const std::array<VertexId, K + 1>& coface,
+                         const std::array<VertexId, K>& face) {
+  for (std::size_t i = 0; i < K; ++i) {
+    if (coface[i] != face[i]) return coface[i];
+  }
+  return coface[K];
+}
+
+class Classifier {
+ public:
+  Classifier(std::span<const WeightedPoint> points, DualComplex& out)
+      : points_(points), r_(out.triangulation), cof_(r_), in_k_(out.in_k) {
+    for (int d = 0; d < 4; ++d) in_k_[d].assign(r_.size(d), false);
+  }
+
+  void run() {
+    for (SimplexIndex t = 0; t < r_.size(3); ++t) {
+      in_k_[3][t] = orthosphere_power_sign(weighted(r_.tetrahedra()[t])) != Sign::positive;
+    }
+    for (SimplexIndex f = 0; f < r_.size(2); ++f) {
+      in_k_[2][f] = classify(2, f, r_.triangles()[f], r_.tetrahedra());
+    }
+    for (SimplexIndex e = 0; e < r_.size(1); ++e) {
+      in_k_[1][e] = classify(1, e, r_.edges()[e], r_.triangles());
+    }
+    for (SimplexIndex v = 0; v < r_.size(0); ++v) {
+      in_k_[0][v] = classify(0, v, std::array<VertexId, 1>{r_.vertices()[v]}, r_.edges());
+    }
+  }
+
+ private:
+  template <std::size_t K>
+  std::array<WeightedPoint, K> weighted(const std::array<VertexId, K>& s) const {
+    std::array<WeightedPoint, K> w;
+    for (std::size_t i = 0; i < K; ++i) w[i] = points_[s[i]];
+    return w;
+  }
+
+  /// Membership of the simplex `s` of dimension d < 3 (index i), its cofaces classified.
+  template <std::size_t K, class Cofaces>
+  bool classify(int d, SimplexIndex i, const std::array<VertexId, K>& s,
+                const Cofaces& coface_list) const {
+    const auto cofaces = cof_.cofaces(d, i);
+    for (const SimplexIndex c : cofaces) {
+      if (in_k_[d + 1][c]) return true;  // V_c ⊂ V_s, and K is closed under faces
+    }
+    const auto sigma = weighted(s);
+    // No coface in K: the minimum of π over V_s is ≤ 0 only at z_s, if z_s ∈ V_s.
+    if (orthosphere_power_sign(sigma) == Sign::positive) return false;
+    for (const SimplexIndex c : cofaces) {
+      const VertexId p = opposite_vertex<K>(coface_list[c], s);
+      if (orthosphere_attachment_sign(sigma, points_[p]) == Sign::negative) return false;
+    }
+    return true;
+  }
+
+  std::span<const WeightedPoint> points_;
+  const SimplicialComplex& r_;
+  CofaceIndex cof_;
+  std::array<std::vector<bool>, 4>& in_k_;
+};
+
+void classify_facets(DualComplex& k) {
+  const CofaceIndex cof(k.triangulation);
+  k.facet_class.assign(k.triangulation.size(2), FacetClass::exterior);
+  for (SimplexIndex f = 0; f < k.triangulation.size(2); ++f) {
+    if (!k.in_k[2][f]) continue;
+    int tets_in_k = 0;
+    for (const SimplexIndex t : cof.cofaces(2, f)) tets_in_k += k.in_k[3][t] ? 1 : 0;
+    k.facet_class[f] = static_cast<FacetClass>(1 + tets_in_k);
+  }
+}
+
+}  // namespace
+
+const char* to_string(FacetClass c) {
+  switch (c) {
+    case FacetClass::exterior: return "exterior";
+    case FacetClass::singular: return "singular";
+    case FacetClass::regular: return "regular";
+    case FacetClass::interior: return "interior";
+  }
+  return "?";
+}
+
+std::array<std::size_t, 4> DualComplex::counts() const {
+  std::array<std::size_t, 4> n{};
+  for (int d = 0; d < 4; ++d) {
+    for (const bool b : in_k[d]) n[d] += b ? 1 : 0;
+  }
+  return n;
+}
+
+std::array<std::size_t, 4> DualComplex::facet_class_counts() const {
+  std::array<std::size_t, 4> n{};
+  for (const FacetClass c : facet_class) ++n[static_cast<std::size_t>(c)];
+  return n;
+}
+
+DualComplex dual_complex(std::span<const WeightedPoint> points,
+                         std::span<const Tetrahedron> cells) {
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    for (const VertexId v : cells[c]) {
+      if (v >= points.size()) {
+        throw InvalidInput("dual_complex: cell #" + std::to_string(c) + " names point " +
+                           std::to_string(v) + " but there are " +
+                           std::to_string(points.size()) + " points");
+      }
+    }
+  }
+  DualComplex k;
+  k.triangulation = SimplicialComplex::closure_of(cells);
+  Classifier(points, k).run();
+  classify_facets(k);
+  return k;
+}
+
+}  // namespace rstruct::complex
