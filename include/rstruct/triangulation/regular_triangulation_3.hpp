@@ -300,6 +300,25 @@ class RegularTriangulation3 {
 
   friend class Builder;
 
+  /// Index (0..3) of the infinite vertex in c, or −1.
+  int infinite_index(CellId c) const {
+    const Cell& k = cells_[c];
+    for (int i = 0; i < 4; ++i) {
+      if (k.v[i] == kInfiniteVertex) return i;
+    }
+    return -1;
+  }
+  /// Sign of orient3d of cell c with its vertex i replaced by q (the other three finite).
+  int orient_replaced(CellId c, int i, const Point3& q) const;
+  /// Remembering stochastic walk from `start` (a live cell) to a cell whose closure contains
+  /// q; an infinite cell iff q is strictly outside the hull. `rng` is the caller's state.
+  CellId walk(const Point3& q, CellId start, std::uint64_t& rng, std::uint64_t& steps) const;
+  /// Some live cell, for walks without a usable hint.
+  CellId any_cell() const;
+  /// Rebuilds vertex_cell_, the counts and the hidden/duplicate reports from the cells and
+  /// the raw hidden records (point, hint cell).
+  void finalize(std::span<const HiddenPoint> raw_hidden);
+
   std::vector<Point3> points_;
   std::vector<double> weights_;
   std::vector<Cell> cells_;
