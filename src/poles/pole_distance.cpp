@@ -1,0 +1,84 @@
+#include "rstruct/poles/pole_distance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <thread>
+
+#include "point_kd_tree.hpp"
+#include "rstruct/core/error.hpp"
+
+namespace rstruct::poles {
+namespace {
+
+void check_inputs(std::span<const Point3> points, std::span<const Point3> poles) {
+  if (poles.empty() && !points.empty()) {
+    throw InvalidInput("pole distance: there are no poles");
+  }
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!is_finite(points[i])) {
+      throw InvalidInput("pole distance: point " + std::to_string(i) + " is not finite");
+    }
+  }
+  for (std::size_t i = 0; i < poles.size(); ++i) {
+    if (!is_finite(poles[i])) {
+      throw InvalidInput("pole distance: pole " + std::to_string(i) + " is not finite");
+    }
+  }
+}
+
+}  // namespace
+
+PoleDistance pole_distance(std::span<const Point3> points, std::span<const Point3> pole_centres,
+                           unsigned threads) {
+  check_inputs(points, pole_centres);
+  PoleDistance result;
+  result.distance.resize(points.size());
+  result.nearest.resize(points.size());
+  if (points.empty()) return result;
+  const detail::PointKdTree tree(pole_centres);
+  const unsigned hardware = std::max(1U, std::thread::hardware_concurrency());
+  const std::size_t useful = std::max<std::size_t>(1, points.size() / 8192);
+  const auto t = static_cast<unsigned>(
+      std::min<std::size_t>(threads != 0 ? threads : hardware, useful));
+  const std::size_t chunk = (points.size() + t - 1) / t;
+  auto run = [&](unsigned k) {
+    const std::size_t begin = std::min(points.size(), k * chunk);
+    const std::size_t end = std::min(points.size(), begin + chunk);
+    for (std::size_t i = begin; i < end; ++i) {
+      double d2 = 0;
+      result.nearest[i] = tree.nearest(points[i], &d2);
+      // Recompute from the pole itself: the kd-tree's accumulated sum may differ in the
+      // last bits, and D̂ should be the correctly computed |x − p| of the reported pole.
+      result.distance[i] = distance(points[i], pole_centres[result.nearest[i]]);
+    }
+  };
+  {
+    std::vector<std::jthread> workers;
+    for (unsigned k = 1; k < t; ++k) workers.emplace_back(run, k);
+    run(0);
+  }  // workers join here, before result is returned
+  return result;
+}
+
+PoleDistance pole_distance_brute_force(std::span<const Point3> points,
+                                       std::span<const Point3> pole_centres) {
+  check_inputs(points, pole_centres);
+  PoleDistance result;
+  for (const Point3& x : points) {
+    std::uint32_t best = 0;
+    double best_d2 = HUGE_VAL;
+    for (std::size_t j = 0; j < pole_centres.size(); ++j) {
+      const double d2 = squared_distance(x, pole_centres[j]);
+      if (d2 < best_d2) {
+        best_d2 = d2;
+        best = static_cast<std::uint32_t>(j);
+      }
+    }
+    result.nearest.push_back(best);
+    result.distance.push_back(distance(x, pole_centres[best]));
+  }
+  return result;
+}
+
+}  // namespace rstruct::poles
