@@ -27,10 +27,7 @@ ParameterCheck check_ball_parameters(const BallParameters& parameters) {
     throw InvalidInput("parameter rho = 0 is invalid: surface balls need a positive radius");
   }
   ParameterCheck check;
-  auto warn = [&check](const std::string& text) {
-    check.warnings.push_back(text);
-    check.topology_guaranteed = false;
-  };
+  auto warn = [&check](const std::string& text) { check.warnings.push_back(text); };
   if (parameters.rho < kRhoMin || parameters.rho > kRhoMax) {
     std::ostringstream text;
     text << "rho = " << parameters.rho << " lies outside [" << kRhoMin << ", " << kRhoMax

@@ -17,6 +17,17 @@ void check_soup(const TetrahedronSoup& soup) {
     throw InvalidInput("poles: sample_count exceeds the number of vertices");
   }
   if (soup.tets.size() >= kNoTet) throw InvalidInput("poles: too many tetrahedra");
+  const auto& rep = soup.representative;
+  if (!rep.empty()) {
+    if (rep.size() != soup.sample_count) {
+      throw InvalidInput("poles: representative has the wrong size");
+    }
+    for (std::size_t s = 0; s < rep.size(); ++s) {
+      if (rep[s] >= soup.sample_count || rep[rep[s]] != rep[s]) {
+        throw InvalidInput("poles: sample " + std::to_string(s) + " has an invalid representative");
+      }
+    }
+  }
   for (std::size_t t = 0; t < soup.tets.size(); ++t) {
     for (const std::uint32_t v : soup.tets[t]) {
       if (v >= soup.vertices.size()) {
@@ -107,8 +118,11 @@ PoleSet compute_poles(const TetrahedronSoup& soup) {
   }
   poles.label.assign(poles.size(), PoleLabel::unlabelled);
   poles.sample_poles.resize(n);
+  poles.representative.resize(n);
   for (std::uint32_t s = 0; s < n; ++s) {
-    const std::uint32_t a = choice.first[s], b = choice.second[s];
+    const std::uint32_t r = soup.representative.empty() ? s : soup.representative[s];
+    const std::uint32_t a = choice.first[r], b = choice.second[r];
+    poles.representative[s] = r;
     poles.sample_poles[s] = {a == kNoTet ? kNoPole : pole_of_tet[a],
                              b == kNoTet ? kNoPole : pole_of_tet[b]};
   }
@@ -118,7 +132,8 @@ PoleSet compute_poles(const TetrahedronSoup& soup) {
 bool PoleSet::is_valid() const {
   const std::size_t m = centre.size();
   if (radius.size() != m || tet.size() != m || sites.size() != m || owner.size() != m ||
-      label.size() != m || sample_poles.size() != sample_count) {
+      label.size() != m || sample_poles.size() != sample_count ||
+      representative.size() != sample_count) {
     return false;
   }
   for (std::size_t p = 0; p < m; ++p) {
@@ -127,12 +142,14 @@ bool PoleSet::is_valid() const {
   }
   for (std::uint32_t s = 0; s < sample_count; ++s) {
     const auto [a, b] = sample_poles[s];
+    const std::uint32_t r = representative[s];
+    if (r >= sample_count || representative[r] != r) return false;
     if (a == kNoPole && b != kNoPole) return false;
     for (const std::uint32_t p : sample_poles[s]) {
       if (p == kNoPole) continue;
       if (p >= m) return false;
-      if (std::find(sites[p].begin(), sites[p].end(), s) == sites[p].end()) return false;
-      if (owner[p] > s) return false;
+      if (std::find(sites[p].begin(), sites[p].end(), r) == sites[p].end()) return false;
+      if (owner[p] > r) return false;
     }
     if (a != kNoPole && b != kNoPole) {
       if (a == b || radius[b] > radius[a]) return false;

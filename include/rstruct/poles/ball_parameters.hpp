@@ -30,11 +30,11 @@ struct BallParameters {
   bool eps_relative = false; ///< if true, ε is multiplied by the samples' bounding-box diagonal
 };
 
-/// Outcome of the guard: the warnings to print and record; `topology_guaranteed` is false
-/// whenever a warning concerns ρ or ρ̃.
+/// Outcome of the guard: the warnings to print on stderr and record in the report. Every
+/// warning means that the topology guarantee (Lemma 5.6 / Theorem 6.1) no longer holds.
 struct ParameterCheck {
   std::vector<std::string> warnings;
-  bool topology_guaranteed = true;
+  bool topology_guarantee_holds() const { return warnings.empty(); }
 };
 
 /// Checks `parameters`.

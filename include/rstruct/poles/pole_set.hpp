@@ -32,11 +32,14 @@ enum class PoleLabel : std::uint8_t { unlabelled = 0, inner = 1, outer = 2 };
 
 /// A Delaunay tetrahedralisation as flat arrays: vertices [0, sample_count) are the samples,
 /// the rest are extra sites (the bounding-box corners), which get no poles.
-/// `tets` lists every finite tetrahedron once (any orientation).
+/// `tets` lists every finite tetrahedron once (any orientation). A sample that is not a
+/// vertex (an exact duplicate merged by the triangulation) names in `representative` the
+/// vertex it was merged into; an empty `representative` means every sample is a vertex.
 struct TetrahedronSoup {
   std::span<const Point3> vertices;
   std::size_t sample_count = 0;
   std::span<const std::array<std::uint32_t, 4>> tets;
+  std::span<const std::uint32_t> representative;
 };
 
 struct PoleSet {
@@ -47,12 +50,14 @@ struct PoleSet {
   std::vector<double> radius;                       ///< polar radius = circumradius
   std::vector<std::uint32_t> tet;                   ///< index of its tetrahedron in the soup
   std::vector<std::array<std::uint32_t, 4>> sites;  ///< the tetrahedron's vertices
-  std::vector<std::uint32_t> owner;                 ///< smallest sample having it as a pole
+  std::vector<std::uint32_t> owner;                 ///< smallest vertex having it as a pole
   std::vector<PoleLabel> label;                     ///< all unlabelled until label_poles()
 
   /// Per sample: {first pole p⁺, second pole p⁻} as pole indices (kNoPole if the sample
-  /// has no cell, e.g. a duplicate, or no vertex on the far side of p⁺).
+  /// has no vertex on the far side of p⁺). A duplicate shares its representative's poles.
   std::vector<std::array<std::uint32_t, 2>> sample_poles;
+  /// Per sample: the vertex whose Voronoi cell it has (itself, or the sample it duplicates).
+  std::vector<std::uint32_t> representative;
 
   std::size_t size() const { return centre.size(); }
   /// True if the pole's tetrahedron has a bounding-box site: such poles are outer.
@@ -76,7 +81,8 @@ struct PoleSet {
 };
 
 /// Poles of the samples from a Delaunay tetrahedralisation.
-/// \throws InvalidInput if a tetrahedron has a vertex index out of range.
+/// \throws InvalidInput if a tetrahedron has a vertex index out of range, or a representative
+/// is out of range or is itself not its own representative.
 /// \throws InternalError if a tetrahedron is flat.
 PoleSet compute_poles(const TetrahedronSoup& soup);
 
