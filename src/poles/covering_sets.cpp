@@ -6,6 +6,7 @@
 #include <sstream>
 #include <thread>
 
+#include "parallel_blocks.hpp"
 #include "point_kd_tree.hpp"
 #include "rstruct/core/error.hpp"
 #include "rstruct/predicates/predicates.hpp"
@@ -109,14 +110,7 @@ CoveringSets covering_sets(std::span<const Ball> balls, std::span<const Point3> 
     const std::size_t end = std::min(balls.size(), begin + chunk);
     cover_block(tree, balls, points, begin, end, blocks[k]);
   };
-  if (t == 1) {
-    run(0);
-  } else {
-    std::vector<std::jthread> workers;
-    workers.reserve(t - 1);
-    for (unsigned k = 1; k < t; ++k) workers.emplace_back(run, k);
-    run(0);
-  }  // workers join here
+  detail::run_blocks(t, run);
   std::size_t total = 0;
   for (const Block& block : blocks) total += block.rows.size();
   sets.rows.reserve(total);

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <thread>
 
+#include "parallel_blocks.hpp"
 #include "point_kd_tree.hpp"
 #include "rstruct/core/error.hpp"
 
@@ -53,11 +53,7 @@ PoleDistance pole_distance(std::span<const Point3> points, std::span<const Point
       result.distance[i] = distance(points[i], pole_centres[result.nearest[i]]);
     }
   };
-  {
-    std::vector<std::jthread> workers;
-    for (unsigned k = 1; k < t; ++k) workers.emplace_back(run, k);
-    run(0);
-  }  // workers join here, before result is returned
+  detail::run_blocks(t, run);
   return result;
 }
 
