@@ -116,26 +116,37 @@ TEST_CASE("metamorphic: permuting samples or scaling by 2^k gives the same poles
   const auto base = analyse_poles(samples);
   REQUIRE(base.labeling.is_clean());
 
-  std::vector<Point3> shuffled = samples;
+  std::vector<std::uint32_t> order(samples.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
   std::mt19937_64 rng(5);
-  std::shuffle(shuffled.begin(), shuffled.end(), rng);
+  std::shuffle(order.begin(), order.end(), rng);
+  std::vector<Point3> shuffled;
+  for (const std::uint32_t i : order) shuffled.push_back(samples[i]);
   const auto permuted = analyse_poles(shuffled);
   CHECK(permuted.labeling.is_clean());
-  // The Delaunay triangulation is unique (symbolic perturbation aside, the sample is in
-  // general position), so the poles are the same circumcentres; rounding of a centre
-  // depends on which vertex it is computed from, hence the tiny tolerance.
-  const auto k0 = keys(base.poles), k1 = keys(permuted.poles);
-  REQUIRE(k0.size() == k1.size());
-  for (std::size_t i = 0; i < k0.size(); ++i) {
-    CHECK(std::get<3>(k1[i]) == Approx(std::get<3>(k0[i])).epsilon(1e-9));
-    CHECK(std::get<4>(k1[i]) == std::get<4>(k0[i]));
+  // The Delaunay triangulation does not depend on the numbering here, but which of several
+  // incident circumballs of (almost) equal radius is the farthest is decided on rounded
+  // radii, and rounding depends on the vertex order inside a cell (on a sphere sample all
+  // inner circumballs nearly coincide). So compare per sample: the polar radii agree to
+  // rounding, the labels exactly.
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::uint32_t s = order[k];
+    for (int j = 0; j < 2; ++j) {
+      const std::uint32_t p = base.poles.sample_poles[s][j];
+      const std::uint32_t q = permuted.poles.sample_poles[k][j];
+      REQUIRE(p != rstruct::poles::kNoPole);
+      REQUIRE(q != rstruct::poles::kNoPole);
+      CHECK(permuted.poles.radius[q] == Approx(base.poles.radius[p]).epsilon(1e-9));
+      CHECK(permuted.poles.label[q] == base.poles.label[p]);
+    }
+    CHECK(permuted.dhat.distance[k] == Approx(base.dhat.distance[s]).epsilon(1e-9));
   }
 
   std::vector<Point3> scaled = samples;
   for (auto& p : scaled) p *= 0x1p-20;
   const auto small = analyse_poles(scaled);
   CHECK(small.labeling.is_clean());
-  CHECK(keys(small.poles, 0x1p20) == k0);  // every operation scales exactly
+  CHECK(keys(small.poles, 0x1p20) == keys(base.poles));  // every operation scales exactly
   for (std::size_t s = 0; s < samples.size(); ++s) {
     CHECK(small.dhat.distance[s] * 0x1p20 == base.dhat.distance[s]);
   }
