@@ -8,17 +8,18 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <numbers>
 #include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "rstruct/core/report.hpp"
 #include "rstruct/core/stopwatch.hpp"
 #include "rstruct/poles/ball_sets.hpp"
 #include "rstruct/poles/covering_sets.hpp"
 #include "rstruct/poles/pole_analysis.hpp"
+#include "rstruct/poles/pole_labeling.hpp"
 #include "rstruct/triangulation/regular_triangulation_3.hpp"
 
 namespace {
@@ -49,11 +50,64 @@ double median(std::vector<double> v) {
   return v.size() % 2 == 1 ? v[k] : 0.5 * (v[k - 1] + v[k]);
 }
 
-double stage(const rstruct::Report& report, const std::string& name) {
-  for (const auto& [n, s] : report.stages()) {
-    if (n == name) return s;
+/// Process CPU seconds (all threads): stable on a loaded machine, unlike wall time.
+double cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+/// Wall and CPU seconds of one stage.
+struct Timer {
+  rstruct::Stopwatch wall;
+  double cpu0 = cpu_seconds();
+  void stop(std::vector<double>& w, std::vector<double>& c) {
+    w.push_back(wall.seconds());
+    c.push_back(cpu_seconds() - cpu0);
   }
-  return 0;
+};
+
+enum Stage { kDelaunay, kDelaunayBox, kPoles, kLabels, kDhat, kCover, kStages };
+const char* const kNames[kStages] = {"delaunay", "del+box", "poles", "labels", "dhat", "cover"};
+
+struct Counts {
+  std::size_t poles = 0, inner = 0, bad = 0, entries = 0;
+};
+
+/// One run of every stage, the way analyse_poles chains them, timing each.
+Counts run_once(const std::vector<Point3>& samples, double rho_tilde, unsigned threads,
+                std::vector<double> (&wall)[kStages], std::vector<double> (&cpu)[kStages]) {
+  namespace poles = rstruct::poles;
+  using rstruct::triangulation::RegularTriangulation3;
+  {
+    Timer t;
+    const RegularTriangulation3 dt(samples);
+    t.stop(wall[kDelaunay], cpu[kDelaunay]);
+  }
+  Timer t_box;
+  std::vector<Point3> sites = samples;
+  const auto box = poles::bounding_box_sites(samples, 3.0);
+  sites.insert(sites.end(), box.begin(), box.end());
+  const RegularTriangulation3 dt(sites);
+  std::vector<std::array<std::uint32_t, 4>> tets;
+  tets.reserve(dt.number_of_finite_cells());
+  dt.for_each_finite_cell([&](rstruct::triangulation::CellId c) { tets.push_back(dt.vertices(c)); });
+  t_box.stop(wall[kDelaunayBox], cpu[kDelaunayBox]);
+  Timer t_poles;
+  poles::PoleSet pole_set = poles::compute_poles({sites, samples.size(), tets, {}}, threads);
+  t_poles.stop(wall[kPoles], cpu[kPoles]);
+  Timer t_labels;
+  const auto labeling = poles::label_poles(pole_set, samples);
+  t_labels.stop(wall[kLabels], cpu[kLabels]);
+  Timer t_dhat;
+  const auto dhat = poles::pole_distance(samples, pole_set, threads);
+  t_dhat.stop(wall[kDhat], cpu[kDhat]);
+  Timer t_cover;
+  const auto balls = poles::scaled_sample_balls(samples, dhat.distance, rho_tilde);
+  const auto sets = poles::covering_sets(balls, samples, threads);
+  t_cover.stop(wall[kCover], cpu[kCover]);
+  return {pole_set.size(), labeling.inner, labeling.unlabelled + labeling.contradictory,
+          sets.entry_count()};
 }
 
 std::vector<std::size_t> parse_sizes(const std::string& text) {
@@ -82,43 +136,23 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  std::printf("# torus R=3 a=1 uniform sample; medians of %d runs; threads=%u; seconds\n", runs,
-              threads);
-  std::printf("%9s %9s %9s %8s %8s %8s %8s %9s %7s %9s %8s %5s %10s\n", "n", "delaunay",
-              "del+box", "poles", "labels", "dhat", "cover", "ours", "ratio", "poles#",
-              "inner#", "bad#", "entries");
+  std::printf("# torus R=3 a=1 uniform sample; medians of %d runs; threads=%u\n", runs, threads);
+  std::printf("# ours = poles + labels + dhat + cover; ratio = ours / delaunay (same input)\n");
   for (const std::size_t n : sizes) {
     const auto samples = torus_sample(n, 12345 + n);
-    std::vector<double> t_ref, t_box, t_poles, t_labels, t_dhat, t_cover;
-    std::size_t pole_count = 0, inner = 0, bad = 0, entries = 0;
-    for (int run = 0; run < runs; ++run) {
-      {
-        rstruct::Stopwatch clock;
-        const rstruct::triangulation::RegularTriangulation3 dt(samples);
-        t_ref.push_back(clock.seconds());
-      }
-      rstruct::Report report;
-      rstruct::poles::PoleAnalysisOptions options;
-      options.threads = threads;
-      const auto analysis = rstruct::poles::analyse_poles(samples, options, &report);
-      rstruct::Stopwatch clock;
-      const auto balls =
-          rstruct::poles::scaled_sample_balls(samples, analysis.dhat.distance, rho_tilde);
-      const auto sets = rstruct::poles::covering_sets(balls, samples, threads);
-      t_cover.push_back(clock.seconds());
-      t_box.push_back(stage(report, "delaunay"));
-      t_poles.push_back(stage(report, "poles"));
-      t_labels.push_back(stage(report, "labels"));
-      t_dhat.push_back(stage(report, "pole distance"));
-      pole_count = analysis.poles.size();
-      inner = analysis.labeling.inner;
-      bad = analysis.labeling.unlabelled + analysis.labeling.contradictory;
-      entries = sets.entry_count();
+    std::vector<double> wall[kStages], cpu[kStages];
+    Counts counts;
+    for (int run = 0; run < runs; ++run) counts = run_once(samples, rho_tilde, threads, wall, cpu);
+    for (const auto* kind : {"wall", "cpu"}) {
+      auto& times = std::string(kind) == "wall" ? wall : cpu;
+      std::printf("n=%zu %s:", n, kind);
+      for (int k = 0; k < kStages; ++k) std::printf(" %s=%.3f", kNames[k], median(times[k]));
+      const double ours = median(times[kPoles]) + median(times[kLabels]) +
+                          median(times[kDhat]) + median(times[kCover]);
+      std::printf(" ours=%.3f ratio=%.2f\n", ours, ours / median(times[kDelaunay]));
     }
-    const double ours = median(t_poles) + median(t_labels) + median(t_dhat) + median(t_cover);
-    std::printf("%9zu %9.3f %9.3f %8.3f %8.3f %8.3f %8.3f %9.3f %7.2f %9zu %8zu %5zu %10zu\n", n,
-                median(t_ref), median(t_box), median(t_poles), median(t_labels), median(t_dhat),
-                median(t_cover), ours, ours / median(t_ref), pole_count, inner, bad, entries);
+    std::printf("n=%zu checksum: poles=%zu inner=%zu unlabelled+contradictory=%zu entries=%zu\n",
+                n, counts.poles, counts.inner, counts.bad, counts.entries);
     std::fflush(stdout);
   }
   return 0;

@@ -34,6 +34,18 @@ class PointKdTree {
     return index;
   }
 
+  /// Like nearest(), but starts from a known candidate: the point `index` at computed
+  /// squared distance `squared_distance` (as computed by rstruct::squared_distance, whose
+  /// summation order nanoflann shares). The search then prunes every subtree farther than
+  /// that, which makes it much faster when the candidate is close. Returns a point whose
+  /// squared distance is the minimum (ties: the candidate is kept).
+  std::uint32_t nearest_from(const Point3& q, std::uint32_t index, double squared_distance) const {
+    Nearest result{squared_distance, index};
+    const double query[3] = {q.x, q.y, q.z};
+    tree_.findNeighbors(result, query, nanoflann::SearchParams());
+    return result.index;
+  }
+
   /// Appends to `out` the indices of every point p with |p − q| ≤ r, and possibly a few
   /// more within a relative margin (the search radius is inflated so that floating-point
   /// rounding inside the tree can never lose a point at distance ≤ r).
@@ -66,6 +78,19 @@ class PointKdTree {
     double worstDist() const { return radius_squared; }
     bool addPoint(double d2, std::uint32_t index) {
       if (d2 <= radius_squared) out.push_back(index);
+      return true;
+    }
+  };
+  struct Nearest {
+    double d2;
+    std::uint32_t index;
+    bool full() const { return true; }
+    double worstDist() const { return d2; }
+    bool addPoint(double d, std::uint32_t i) {
+      if (d < d2) {
+        d2 = d;
+        index = i;
+      }
       return true;
     }
   };

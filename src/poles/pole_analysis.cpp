@@ -102,7 +102,8 @@ PoleAnalysis analyse_poles(std::span<const Point3> samples, const PoleAnalysisOp
   analysis.tetrahedra = soup.tets.size();
   {
     Report::Stage stage(r, "poles");
-    analysis.poles = compute_poles({sites, samples.size(), soup.tets, soup.representative});
+    analysis.poles =
+        compute_poles({sites, samples.size(), soup.tets, soup.representative}, options.threads);
   }
   soup = Soup{};
   {
@@ -111,7 +112,7 @@ PoleAnalysis analyse_poles(std::span<const Point3> samples, const PoleAnalysisOp
   }
   {
     Report::Stage stage(r, "pole distance");
-    analysis.dhat = pole_distance(samples, analysis.poles.centre, options.threads);
+    analysis.dhat = pole_distance(samples, analysis.poles, options.threads);
   }
   if (report != nullptr) record(*report, analysis);
   return analysis;

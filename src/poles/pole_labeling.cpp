@@ -22,15 +22,15 @@ void check_threshold(double value, const char* name) {
   }
 }
 
-/// Poles incident to each sample (the sample is a vertex of the pole's tetrahedron), CSR.
+/// Poles incident to each sample s (s is a vertex of the pole's tetrahedron), CSR, with the
+/// unit vector from s towards each such pole: the cosine of the angle at which two polar
+/// spheres through s meet is then one dot product.
 struct Incidence {
   std::vector<std::uint32_t> start, poles;
-  std::span<const std::uint32_t> of(std::uint32_t s) const {
-    return {poles.data() + start[s], poles.data() + start[s + 1]};
-  }
+  std::vector<Vec3> unit;
 };
 
-Incidence build_incidence(const PoleSet& poles) {
+Incidence build_incidence(const PoleSet& poles, std::span<const Point3> samples) {
   const std::size_t n = poles.sample_count;
   Incidence inc;
   inc.start.assign(n + 1, 0);
@@ -41,10 +41,16 @@ Incidence build_incidence(const PoleSet& poles) {
   }
   for (std::size_t s = 0; s < n; ++s) inc.start[s + 1] += inc.start[s];
   inc.poles.resize(inc.start[n]);
+  inc.unit.resize(inc.start[n]);
   std::vector<std::uint32_t> fill(inc.start.begin(), inc.start.end() - 1);
   for (std::uint32_t p = 0; p < poles.size(); ++p) {
     for (const std::uint32_t v : poles.sites[p]) {
-      if (v < n) inc.poles[fill[v]++] = p;
+      if (v >= n) continue;
+      const Vec3 d = poles.centre[p] - samples[v];
+      const double length = norm(d);
+      inc.poles[fill[v]] = p;
+      // A zero vector (pole on the sample, impossible for radius > 0) gives no evidence.
+      inc.unit[fill[v]++] = length > 0 ? d / length : Vec3{};
     }
   }
   return inc;
@@ -54,9 +60,8 @@ class Labeler {
  public:
   Labeler(PoleSet& poles, std::span<const Point3> samples, const LabelingParameters& parameters)
       : poles_(poles),
-        samples_(samples),
         parameters_(parameters),
-        incidence_(build_incidence(poles)),
+        incidence_(build_incidence(poles, samples)),
         inner_(poles.size(), kNone),
         outer_(poles.size(), kNone),
         done_(poles.size(), 0) {}
@@ -102,26 +107,24 @@ class Labeler {
     const PoleLabel other = same == PoleLabel::inner ? PoleLabel::outer : PoleLabel::inner;
     for (const std::uint32_t s : poles_.sites[p]) {
       if (s >= poles_.sample_count) continue;
-      const Vec3 dp = poles_.centre[p] - samples_[s];
-      const double np = norm(dp);
-      for (const std::uint32_t q : incidence_.of(s)) {
-        if (q == p) continue;
-        const Vec3 dq = poles_.centre[q] - samples_[s];
-        const double denominator = np * norm(dq);
-        if (!(denominator > 0)) continue;
+      const std::uint32_t begin = incidence_.start[s], end = incidence_.start[s + 1];
+      std::uint32_t own = begin;
+      while (incidence_.poles[own] != p) ++own;  // p is incident to s by construction
+      const Vec3 up = incidence_.unit[own];
+      for (std::uint32_t k = begin; k < end; ++k) {
+        if (k == own) continue;
         ++stats.pairs_examined;
-        const double c = dot(dp, dq) / denominator;
+        const double c = dot(up, incidence_.unit[k]);
         if (c >= parameters_.same_min_cos) {
-          give(q, same, c);
+          give(incidence_.poles[k], same, c);
         } else if (-c >= parameters_.opposite_min_cos) {
-          give(q, other, -c);
+          give(incidence_.poles[k], other, -c);
         }
       }
     }
   }
 
   PoleSet& poles_;
-  std::span<const Point3> samples_;
   LabelingParameters parameters_;
   Incidence incidence_;
   std::vector<double> inner_, outer_;

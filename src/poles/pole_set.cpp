@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <thread>
 
 #include "circumsphere.hpp"
+#include "parallel_blocks.hpp"
 #include "rstruct/core/error.hpp"
 
 namespace rstruct::poles {
@@ -38,15 +40,30 @@ void check_soup(const TetrahedronSoup& soup) {
   }
 }
 
-detail::Circumsphere sphere_of(const TetrahedronSoup& soup, std::uint32_t t) {
-  const auto& q = soup.tets[t];
-  return detail::circumsphere(soup.vertices[q[0]], soup.vertices[q[1]], soup.vertices[q[2]],
-                              soup.vertices[q[3]]);
+/// Circumspheres of all tetrahedra, computed in parallel blocks.
+std::vector<detail::Circumsphere> circumspheres(const TetrahedronSoup& soup, unsigned threads) {
+  std::vector<detail::Circumsphere> spheres(soup.tets.size());
+  const unsigned hardware = std::max(1U, std::thread::hardware_concurrency());
+  const std::size_t useful = std::max<std::size_t>(1, spheres.size() / 16384);
+  const auto t = static_cast<unsigned>(
+      std::min<std::size_t>(threads != 0 ? threads : hardware, useful));
+  const std::size_t chunk = (spheres.size() + t - 1) / t;
+  detail::run_blocks(t, [&](unsigned k) {
+    const std::size_t begin = std::min(spheres.size(), k * chunk);
+    const std::size_t end = std::min(spheres.size(), begin + chunk);
+    for (std::size_t i = begin; i < end; ++i) {
+      const auto& q = soup.tets[i];
+      spheres[i] = detail::circumsphere(soup.vertices[q[0]], soup.vertices[q[1]],
+                                        soup.vertices[q[2]], soup.vertices[q[3]]);
+    }
+  });
+  return spheres;
 }
 
 /// Per sample: the incident tetrahedra chosen as p⁺ and p⁻ (kNoTet if none), and the
 /// vector p⁺ − s.
 struct Choice {
+  std::vector<detail::Circumsphere> spheres;
   std::vector<std::uint32_t> first, second;
   std::vector<double> first_r2, second_r2;
   std::vector<Vec3> first_direction;
@@ -55,7 +72,7 @@ struct Choice {
 void choose_first_poles(const TetrahedronSoup& soup, Choice& choice) {
   for (std::uint32_t t = 0; t < soup.tets.size(); ++t) {
     const auto& q = soup.tets[t];
-    const detail::Circumsphere cs = sphere_of(soup, t);
+    const detail::Circumsphere& cs = choice.spheres[t];
     for (const std::uint32_t s : q) {
       if (s < soup.sample_count && cs.squared_radius > choice.first_r2[s]) {
         choice.first_r2[s] = cs.squared_radius;
@@ -69,7 +86,7 @@ void choose_first_poles(const TetrahedronSoup& soup, Choice& choice) {
 void choose_second_poles(const TetrahedronSoup& soup, Choice& choice) {
   for (std::uint32_t t = 0; t < soup.tets.size(); ++t) {
     const auto& q = soup.tets[t];
-    const detail::Circumsphere cs = sphere_of(soup, t);
+    const detail::Circumsphere& cs = choice.spheres[t];
     for (const std::uint32_t s : q) {
       if (s >= soup.sample_count || choice.first[s] == t) continue;
       if (cs.squared_radius <= choice.second_r2[s]) continue;
@@ -84,10 +101,11 @@ void choose_second_poles(const TetrahedronSoup& soup, Choice& choice) {
 
 }  // namespace
 
-PoleSet compute_poles(const TetrahedronSoup& soup) {
+PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads) {
   check_soup(soup);
   const std::size_t n = soup.sample_count;
   Choice choice;
+  choice.spheres = circumspheres(soup, threads);
   choice.first.assign(n, kNoTet);
   choice.second.assign(n, kNoTet);
   choice.first_r2.assign(n, -1.0);
@@ -109,7 +127,7 @@ PoleSet compute_poles(const TetrahedronSoup& soup) {
   for (std::uint32_t t = 0; t < soup.tets.size(); ++t) {
     if (owner_of_tet[t] == kNoPole) continue;
     pole_of_tet[t] = static_cast<std::uint32_t>(poles.size());
-    const detail::Circumsphere cs = sphere_of(soup, t);
+    const detail::Circumsphere& cs = choice.spheres[t];
     poles.centre.push_back(soup.vertices[soup.tets[t][0]] + cs.offset);
     poles.radius.push_back(std::sqrt(cs.squared_radius));
     poles.tet.push_back(t);

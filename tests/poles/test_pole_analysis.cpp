@@ -151,3 +151,14 @@ TEST_CASE("metamorphic: permuting samples or scaling by 2^k gives the same poles
     CHECK(small.dhat.distance[s] * 0x1p20 == base.dhat.distance[s]);
   }
 }
+
+TEST_CASE("D̂ seeded with the own poles equals the plain kd-tree and the brute force") {
+  const auto samples = fibonacci_sphere(700, 1.5, {1e6, 0.5, -1e6});
+  const auto a = analyse_poles(samples);
+  const auto plain = rstruct::poles::pole_distance(samples, a.poles.centre, 1);
+  const auto brute = rstruct::poles::pole_distance_brute_force(samples, a.poles.centre);
+  for (std::size_t s = 0; s < samples.size(); ++s) {
+    CHECK(a.dhat.distance[s] == plain.distance[s]);
+    CHECK(a.dhat.distance[s] == brute.distance[s]);
+  }
+}

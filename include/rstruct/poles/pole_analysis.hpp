@@ -28,7 +28,7 @@ struct PoleAnalysisOptions {
   /// outside the samples' bounding box (so box poles are outer).
   double box_scale = 3.0;
   LabelingParameters labeling;
-  /// Threads for D̂ (0: hardware concurrency).
+  /// Threads for circumspheres and D̂ (0: hardware concurrency).
   unsigned threads = 0;
 };
 

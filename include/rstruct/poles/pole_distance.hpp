@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "rstruct/geometry/vec3.hpp"
+#include "rstruct/poles/pole_set.hpp"
 
 namespace rstruct::poles {
 
@@ -28,6 +29,13 @@ struct PoleDistance {
 /// \throws InvalidInput if `pole_centres` is empty while `points` is not, or any input
 /// coordinate is not finite.
 PoleDistance pole_distance(std::span<const Point3> points, std::span<const Point3> pole_centres,
+                           unsigned threads = 0);
+
+/// The same, for the samples of `poles`: each search starts from the nearer of the sample's
+/// own poles, which bounds D̂(s) and prunes the kd-tree search early. Same result as
+/// pole_distance(samples, poles.centre) (the minimum squared distance is the same double).
+/// \throws InvalidInput as pole_distance, or if samples.size() != poles.sample_count.
+PoleDistance pole_distance(std::span<const Point3> samples, const PoleSet& poles,
                            unsigned threads = 0);
 
 /// Reference implementation for tests: a linear scan per point.

@@ -80,10 +80,11 @@ struct PoleSet {
   bool is_valid() const;
 };
 
-/// Poles of the samples from a Delaunay tetrahedralisation.
+/// Poles of the samples from a Delaunay tetrahedralisation. Circumspheres are computed in
+/// `threads` threads (0: hardware concurrency); the result does not depend on it.
 /// \throws InvalidInput if a tetrahedron has a vertex index out of range, or a representative
 /// is out of range or is itself not its own representative.
 /// \throws InternalError if a tetrahedron is flat.
-PoleSet compute_poles(const TetrahedronSoup& soup);
+PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads = 0);
 
 }  // namespace rstruct::poles
