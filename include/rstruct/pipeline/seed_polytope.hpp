@@ -1,0 +1,89 @@
+#pragma once
+/// \file
+/// The paper's main pipeline (§3, Figure 1; §5–§6; DESIGN.md §1–§5): from an r-sample S of
+/// a closed surface F to the *seed polytope*, a triangle mesh whose vertices are a subset of
+/// S, with the topology of F, plus the map from every sample to its polytope vertex.
+///
+///  1. Delaunay of S, poles, inner/outer labels, pole distance D̂ (poles module).
+///  2. Surface balls B(s, ρ·D̂(s)); ρ ∈ [0.24, 0.56] carries Lemma 5.6's guarantee.
+///  3. Pruning (ρ̃ > 0): a certified set cover of S by the shrunk balls B(u, ρ̃·D̂(u));
+///     ρ̃ ≤ 0.03 carries Theorem 6.1's guarantee. ρ̃ = 0 keeps every ball.
+///  4. Regular triangulation of the kept balls and their dual complex K (weighted α-shape
+///     at α = 0), homotopy-equivalent to the union of the kept balls.
+///  5. Free faces of K collapsed until none remain (homotopy type kept); the rest is the
+///     output, reported with its Betti numbers over Z₂ and whether it is a closed
+///     2-manifold — measured on the complex, never assumed.
+///  6. Sample map: each sample goes to the kept ball whose power cell contains it; if that
+///     ball is not a vertex of the output (its vertex was collapsed away), to the output
+///     vertex of least power distance among the nearest ring of output vertices around it
+///     in the regular triangulation (counted in `remapped_samples`).
+///
+/// With smaller ρ and ρ̃ the same pipeline is the paper's scalable reconstruction.
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rstruct/complex/homology.hpp"
+#include "rstruct/complex/manifold.hpp"
+#include "rstruct/geometry/vec3.hpp"
+#include "rstruct/pipeline/prune_balls.hpp"
+#include "rstruct/poles/pole_analysis.hpp"
+
+namespace rstruct {
+class Report;
+}
+
+namespace rstruct::pipeline {
+
+struct SeedOptions {
+  double rho = 0.5;        ///< surface-ball factor ρ
+  double rho_tilde = 0.03; ///< shrunk-ball factor ρ̃ (0: no pruning)
+  PruneOptions prune;
+  poles::PoleAnalysisOptions poles;
+  /// Refuse to continue when the pole labeling is not clean (unlabelled or contradictory
+  /// poles): D̂ uses poles of both labels, so labels do not enter the seed polytope, but
+  /// a dirty labeling means the input is probably not an r-sample of a closed surface.
+  bool require_clean_labels = false;
+};
+
+struct SeedPolytope {
+  /// Output mesh: vertex k is sample `vertex_sample[k]`; triangles index these vertices,
+  /// consistently oriented when the surface is orientable (outward if the signed volume
+  /// allows telling).
+  std::vector<std::uint32_t> vertex_sample;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  /// Output vertex of every input sample.
+  std::vector<std::uint32_t> sample_vertex;
+  std::size_t remapped_samples = 0;
+
+  std::vector<std::uint32_t> kept;     ///< samples whose balls were kept (sorted)
+  std::vector<double> dhat;            ///< D̂ per sample
+  std::vector<double> radius;          ///< surface-ball radius ρ·D̂ per sample
+  std::size_t hidden_balls = 0;        ///< kept balls with empty power cells
+  PruneResult prune;                   ///< cover size, certified bound and gap (if pruned)
+  bool pruned = false;
+
+  std::array<std::size_t, 4> k_counts{};      ///< simplices of K by dimension
+  std::array<std::size_t, 4> facet_classes{};  ///< exterior, singular, regular, interior
+  complex::BettiNumbers betti_k;
+  complex::BettiNumbers betti_output;
+  complex::ManifoldCheck manifold;
+  bool oriented = false;                       ///< consistently oriented (orientable)
+
+  poles::LabelingStats labeling;
+  std::vector<std::string> warnings;           ///< parameter guards, labeling problems
+};
+
+/// Runs the pipeline. Stage seconds go to `report` (Table 1 breakdown: "delaunay",
+/// "poles", "labels", "pole distance", "surface balls", "covering sets", "set cover",
+/// "regular triangulation", "dual complex", "collapse", "sample map", "homology").
+/// \throws InvalidInput for bad parameters (NaN, negative, ρ̃ ≥ ρ, ρ > 1) or inputs that
+/// the poles stage rejects; ComputationFailed if require_clean_labels and the labeling is
+/// not clean.
+SeedPolytope compute_seed_polytope(std::span<const Point3> samples, const SeedOptions& options,
+                                   Report* report = nullptr);
+
+}  // namespace rstruct::pipeline

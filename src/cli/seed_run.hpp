@@ -1,0 +1,27 @@
+#pragma once
+// Shared by `rstruct seed`, `rstruct reconstruct` and `rstruct demo`: run the seed-polytope
+// pipeline on samples, print the Table 1 style breakdown, and write the outputs.
+
+#include <string>
+#include <vector>
+
+#include "cli/command.hpp"
+#include "rstruct/pipeline/seed_polytope.hpp"
+
+namespace rstruct::cli {
+
+struct SeedOutputs {
+  std::string mesh;   // seed polytope / reconstruction (PLY, OFF, OBJ)
+  std::string map;    // per-sample output vertex id, one per line
+  std::string balls;  // kept balls as PLY vertices with radius
+  bool ascii = false;
+};
+
+/// Runs the pipeline, records the breakdown in `report` under `key`, writes the outputs
+/// and returns the result. Prints the summary to stderr unless quiet.
+pipeline::SeedPolytope run_seed(const std::vector<Point3>& samples,
+                                const pipeline::SeedOptions& options,
+                                const SeedOutputs& outputs, Context& context, Report& report,
+                                const std::string& title);
+
+}  // namespace rstruct::cli

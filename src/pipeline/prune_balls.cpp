@@ -1,0 +1,50 @@
+#include "rstruct/pipeline/prune_balls.hpp"
+
+#include <string>
+
+#include "rstruct/core/error.hpp"
+#include "rstruct/core/report.hpp"
+#include "rstruct/poles/covering_sets.hpp"
+#include "rstruct/setcover/instance.hpp"
+#include "rstruct/setcover/solver.hpp"
+
+namespace rstruct::pipeline {
+
+PruneResult prune_balls(std::span<const Ball> shrunk, std::span<const Point3> points,
+                        const PruneOptions& options, Report* report) {
+  Stopwatch total;
+  PruneResult result;
+  Report scratch;
+  Report& rep = report ? *report : scratch;
+
+  Report::Stage sets_stage(rep, "covering sets");
+  const poles::CoveringSets sets = poles::covering_sets(shrunk, points, options.threads);
+  result.entries = sets.entry_count();
+  // The set-cover module works on signed 32-bit rows and 64-bit offsets.
+  std::vector<std::int64_t> starts(sets.column_offsets.begin(), sets.column_offsets.end());
+  std::vector<std::int32_t> rows(sets.rows.begin(), sets.rows.end());
+  const setcover::Instance instance =
+      setcover::Instance::from_csr(static_cast<std::int32_t>(sets.row_count), starts, rows);
+  sets_stage.finish();
+
+  if (const std::int32_t row = instance.first_uncoverable_row(); row >= 0) {
+    throw ComputationFailed("pruning: point " + std::to_string(row) +
+                            " is covered by no shrunk ball");
+  }
+  Report::Stage cover_stage(rep, "set cover");
+  setcover::SolverOptions solver_options;
+  solver_options.time_limit = options.time_limit;
+  solver_options.seed = options.seed;
+  const setcover::Solution solution = setcover::solve(instance, solver_options);
+  cover_stage.finish();
+
+  result.kept.assign(solution.columns.begin(), solution.columns.end());
+  result.cost = solution.cost;
+  result.lower_bound = solution.lower_bound;
+  result.gap = solution.gap;
+  result.optimal = solution.optimal;
+  result.seconds = total.seconds();
+  return result;
+}
+
+}  // namespace rstruct::pipeline
