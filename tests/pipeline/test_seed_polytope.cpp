@@ -1,0 +1,108 @@
+// The seed-polytope pipeline end to end on certified r-samples (issue 7): the dual complex
+// of the kept surface balls and the collapsed output have the Betti numbers of the sampled
+// surface, every output vertex is a sample, every sample maps to an output vertex, and
+// pruning harder never keeps more balls.
+
+#include "rstruct/pipeline/seed_polytope.hpp"
+
+#include <catch2/catch.hpp>
+#include <set>
+
+#include "rstruct/core/error.hpp"
+#include "rstruct/sampling/sample_request.hpp"
+
+using rstruct::pipeline::SeedOptions;
+using rstruct::pipeline::SeedPolytope;
+
+namespace {
+
+std::vector<rstruct::Point3> certified_sample(const std::string& shape, double r,
+                                              std::uint64_t seed, bool rotate) {
+  rstruct::sampling::SampleRequest request;
+  request.shape = shape;
+  request.r = r;
+  request.seed = seed;
+  request.rotate = rotate;
+  if (rotate) request.translate = {12.5, -3.0, 1e3};
+  return rstruct::sampling::generate_sample(request).points;
+}
+
+void check_structure(const std::vector<rstruct::Point3>& samples, const SeedPolytope& seed) {
+  // Output vertices are distinct kept samples.
+  std::set<std::uint32_t> kept(seed.kept.begin(), seed.kept.end());
+  std::set<std::uint32_t> vertices(seed.vertex_sample.begin(), seed.vertex_sample.end());
+  CHECK(vertices.size() == seed.vertex_sample.size());
+  for (std::uint32_t s : seed.vertex_sample) {
+    REQUIRE(s < samples.size());
+    CHECK(kept.count(s) == 1);
+  }
+  // Triangles index output vertices, no repeated vertex.
+  for (const auto& t : seed.triangles) {
+    for (std::uint32_t v : t) REQUIRE(v < seed.vertex_sample.size());
+    CHECK((t[0] != t[1] && t[1] != t[2] && t[0] != t[2]));
+  }
+  // Every sample maps to an output vertex; a kept sample that is an output vertex maps to
+  // itself unless its ball is hidden or another ball's power cell also contains it.
+  REQUIRE(seed.sample_vertex.size() == samples.size());
+  for (std::uint32_t v : seed.sample_vertex) REQUIRE(v < seed.vertex_sample.size());
+  std::size_t self_mapped = 0;
+  for (std::uint32_t k = 0; k < seed.vertex_sample.size(); ++k) {
+    self_mapped += seed.sample_vertex[seed.vertex_sample[k]] == k;
+  }
+  CHECK(self_mapped >= seed.vertex_sample.size() * 9 / 10);
+}
+
+}  // namespace
+
+TEST_CASE("sphere: K and the output have the sphere's Betti numbers") {
+  const auto samples = certified_sample("sphere", 0.08, 7, false);
+  for (double rho : {0.24, 0.4, 0.56}) {
+    SeedOptions options;
+    options.rho = rho;
+    options.rho_tilde = 0.03;
+    INFO("rho = " << rho << ", " << samples.size() << " samples");
+    const SeedPolytope seed = rstruct::pipeline::compute_seed_polytope(samples, options);
+    CHECK(seed.labeling.is_clean());
+    CHECK(seed.betti_k == rstruct::complex::BettiNumbers{{1, 0, 1, 0}});
+    CHECK(seed.betti_output == rstruct::complex::BettiNumbers{{1, 0, 1, 0}});
+    CHECK(seed.warnings.empty());
+    check_structure(samples, seed);
+  }
+}
+
+TEST_CASE("torus (rotated, translated): genus 1 survives pruning at every shrink factor") {
+  const auto samples = certified_sample("torus", 0.08, 3, true);
+  std::size_t previous_kept = samples.size() + 1;
+  for (double shrink : {0.0, 0.01, 0.03}) {
+    SeedOptions options;
+    options.rho = 0.4;
+    options.rho_tilde = shrink;
+    INFO("shrink = " << shrink << ", " << samples.size() << " samples");
+    const SeedPolytope seed = rstruct::pipeline::compute_seed_polytope(samples, options);
+    CHECK(seed.betti_k == rstruct::complex::BettiNumbers{{1, 2, 1, 0}});
+    CHECK(seed.betti_output == rstruct::complex::BettiNumbers{{1, 2, 1, 0}});
+    check_structure(samples, seed);
+    CHECK(seed.kept.size() <= previous_kept);
+    if (shrink > 0) {
+      CHECK(seed.pruned);
+      CHECK(seed.prune.lower_bound <= seed.prune.cost);
+    }
+    previous_kept = seed.kept.size();
+  }
+}
+
+TEST_CASE("absurd parameters are rejected, unguaranteed ones are warned about") {
+  const auto samples = certified_sample("sphere", 0.08, 1, false);
+  SeedOptions options;
+  options.rho = std::nan("");
+  CHECK_THROWS_AS(rstruct::pipeline::compute_seed_polytope(samples, options),
+                  rstruct::InvalidInput);
+  options.rho = 0.5;
+  options.rho_tilde = 0.6;
+  CHECK_THROWS_AS(rstruct::pipeline::compute_seed_polytope(samples, options),
+                  rstruct::InvalidInput);
+  options.rho = 0.7;
+  options.rho_tilde = 0.05;
+  const SeedPolytope seed = rstruct::pipeline::compute_seed_polytope(samples, options);
+  CHECK(seed.warnings.size() == 2);
+}
