@@ -104,7 +104,7 @@ Inputs near_degenerate_inputs(std::size_t n, std::mt19937_64& rng) {
   Inputs in;
   for (std::size_t i = 0; i < n + 5; ++i) {
     Point3 q = sphere[pick(rng)] * 0x1p-10;
-    if (rng() % 2 == 0) q.x = std::nextafter(q.x, 2.0);
+    if (rng() % 2 == 0 && q.x != 0) q.x = std::nextafter(q.x, 2.0);
     in.p.push_back(q);
     in.w.push_back(0);
   }
