@@ -18,6 +18,8 @@ namespace pr = rstruct::predicates;
 namespace {
 
 constexpr std::uint32_t kUnlinked = 0xFFFFFFFFu;
+/// Neighbour links hold cell << 2 | mirror index in 32 bits.
+constexpr std::size_t kMaxCells = std::size_t{1} << 30;
 
 /// kOther[i][j]: the two indices of {0, 1, 2, 3} other than i and j (i != j).
 constexpr int kOther[4][4][2] = {
@@ -25,6 +27,15 @@ constexpr int kOther[4][4][2] = {
     {{2, 3}, {-1, -1}, {0, 3}, {0, 2}},
     {{1, 3}, {0, 3}, {-1, -1}, {0, 1}},
     {{1, 2}, {0, 2}, {0, 1}, {-1, -1}},
+};
+/// kDirected[i][j] = (a, b): facet j of a positively oriented cell, counter-clockwise seen
+/// from outside the cell and rotated to start at vertex i, is (i, a, b). The cell across
+/// that facet sees it clockwise, as (i, b, a): directed edges pair up reversed.
+constexpr int kDirected[4][4][2] = {
+    {{-1, -1}, {3, 2}, {1, 3}, {2, 1}},
+    {{2, 3}, {-1, -1}, {3, 0}, {0, 2}},
+    {{3, 1}, {0, 3}, {-1, -1}, {1, 0}},
+    {{1, 2}, {2, 0}, {0, 1}, {-1, -1}},
 };
 
 /// Exact orientation of the projection of a, b, c on the coordinate plane (axis0, axis1),
@@ -77,8 +88,9 @@ void Builder::run() {
   // Delaunay of uniform points has about 6.7 cells per point; pages never touched cost
   // nothing, so reserving generously avoids a reallocation (and its 2x peak) in practice.
   t_.cells_.reserve(n * 7 + n / 2 + 64);
-  mark_.reserve(t_.cells_.capacity());
+  marks_.reserve(t_.cells_.capacity() / 32 + 1);
   if (weights_ != nullptr) vertex_mark_.assign(n, 0);
+  vertex_local_.assign(n, 0);
   VertexId first[4] = {vertex_at(0), vertex_at(1), vertex_at(2), vertex_at(3)};
   if (swap_first) std::swap(first[0], first[1]);
   make_first_cells(first);
@@ -89,8 +101,10 @@ void Builder::run() {
     t_.processed_ = k + 1;
     after_insertion(vertex_at(k));
   }
-  mark_.clear();
-  mark_.shrink_to_fit();
+  marks_.clear();
+  marks_.shrink_to_fit();
+  vertex_local_.clear();
+  vertex_local_.shrink_to_fit();
   vertex_mark_.clear();
   vertex_mark_.shrink_to_fit();
   if (reorder_) restore_input_order();
@@ -204,7 +218,7 @@ void Builder::make_first_cells(const VertexId (&v)[4]) {
     std::swap(k.v[s], k.v[u]);
     cells.push_back(k);
   }
-  mark_.assign(cells.size(), kNone);
+  marks_.assign(1, 0);
   // Link the five cells by matching facets (sorted vertex triples).
   const auto facet_key = [&](CellId c, int i) {
     std::array<VertexId, 3> f{};
@@ -240,8 +254,11 @@ CellId Builder::new_cell() {
     --t_.free_count_;
     return c;
   }
+  if (cells.size() >= kMaxCells) {
+    throw InvalidInput("triangulation: more than 2^30 cells needed; the input is too large");
+  }
   cells.push_back(Cell{});
-  mark_.push_back(kNone);
+  if (cells.size() > marks_.size() * 32) marks_.push_back(0);
   return static_cast<CellId>(cells.size() - 1);
 }
 
@@ -304,23 +321,26 @@ void Builder::find_conflict_region(CellId start, VertexId p) {
   outside_.clear();
   boundary_.clear();
   stack_.clear();
-  mark_[start] = kConflict;
+  set_mark(start, kConflict);
   stack_.push_back(start);
   while (!stack_.empty()) {
     const CellId x = stack_.back();
     stack_.pop_back();
     conflict_.push_back(x);
+    // The neighbours are usually not in cache: start all four loads before testing.
+    const Cell& k = t_.cells_[x];
+    for (int i = 0; i < 4; ++i) __builtin_prefetch(&t_.cells_[k.n[i] >> 2]);
     for (int i = 0; i < 4; ++i) {
       const CellId y = t_.cells_[x].n[i] >> 2;
-      const std::uint8_t m = mark_[y];
+      const unsigned m = mark(y);
       if (m == kConflict) continue;
       if (m == kNone) {
         if (in_conflict(y, p)) {
-          mark_[y] = kConflict;
+          set_mark(y, kConflict);
           stack_.push_back(y);
           continue;
         }
-        mark_[y] = kOutside;
+        set_mark(y, kOutside);
         outside_.push_back(y);
       }
       boundary_.push_back({x, i});
@@ -353,10 +373,47 @@ void Builder::build_star(VertexId p) {
   last_ = star_.front();
 }
 
-// The new cells' facets through p pair up along the edges of the cavity boundary (a
-// triangulated sphere: every edge in exactly two boundary facets). A small open-addressing
-// table keyed by the edge's vertex ids pairs them; stamps avoid clearing it.
+// The new cells' facets through p pair up along the edges of the cavity boundary, a
+// triangulated sphere in which every edge lies in exactly two facets with opposite
+// directions. With the boundary's vertices numbered 0..31 (the infinite vertex 0), facet j
+// of new cell n is written at [a][b] and finds its partner at [b][a]: no search, no
+// branch. Larger cavities (degenerate input) use a hash table.
 void Builder::link_star() {
+  std::vector<Cell>& cells = t_.cells_;
+  local_vertices_.clear();
+  const auto local = [&](VertexId v) -> std::size_t {
+    if (v == kInfiniteVertex) return 0;
+    if (vertex_local_[v] == 0 && local_vertices_.size() < kLocal - 1) {
+      local_vertices_.push_back(v);
+      vertex_local_[v] = static_cast<std::uint8_t>(local_vertices_.size());
+    }
+    return vertex_local_[v];  // 0 only when the numbering overflowed
+  };
+  // Pass 0 writes every directed edge, pass 1 reads the reversed one.
+  for (int pass = 0; pass < 2; ++pass) {
+    for (std::size_t s = 0; s < star_.size(); ++s) {
+      const CellId n = star_[s];
+      const int i = boundary_[s].index;  // p's index in n
+      for (int j = 0; j < 4; ++j) {
+        if (j == i) continue;
+        const std::size_t a = local(cells[n].v[kDirected[i][j][0]]);
+        const std::size_t b = local(cells[n].v[kDirected[i][j][1]]);
+        if (pass == 0) {
+          edge_faces_[a * kLocal + b] = n << 2 | static_cast<std::uint32_t>(j);
+        } else {
+          cells[n].n[j] = edge_faces_[b * kLocal + a];
+        }
+      }
+    }
+    if (local_vertices_.size() == kLocal - 1) break;  // may have overflowed: start over
+  }
+  for (const VertexId v : local_vertices_) vertex_local_[v] = 0;
+  if (local_vertices_.size() == kLocal - 1) link_star_hashed();
+}
+
+// Fallback for cavities with many boundary vertices: an open-addressing table keyed by the
+// edge's vertex ids pairs the facets; stamps avoid clearing it.
+void Builder::link_star_hashed() {
   std::vector<Cell>& cells = t_.cells_;
   std::size_t size = 64;
   while (size < 4 * boundary_.size()) size *= 2;
@@ -432,10 +489,10 @@ void Builder::release_conflict_region() {
     cells[x].v[0] = RegularTriangulation3::kFreeMark;
     cells[x].n[0] = t_.free_head_;
     t_.free_head_ = x;
-    mark_[x] = kNone;
+    set_mark(x, kNone);
   }
   t_.free_count_ += conflict_.size();
-  for (const CellId y : outside_) mark_[y] = kNone;
+  for (const CellId y : outside_) set_mark(y, kNone);
 }
 
 }  // namespace rstruct::triangulation

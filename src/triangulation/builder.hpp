@@ -39,6 +39,7 @@ class Builder {
   void find_conflict_region(CellId start, VertexId p);
   void build_star(VertexId p);
   void link_star();
+  void link_star_hashed();
   void collect_hidden_vertices(VertexId p, VertexId duplicate_of);
   void release_conflict_region();
   CellId new_cell();
@@ -48,7 +49,16 @@ class Builder {
   const TriangulationOptions& options_;
   const Point3* points_;
   const double* weights_;  // nullptr: Delaunay fast path
-  std::vector<std::uint8_t> mark_;         // per cell, Mark
+  /// Two bits per cell (a Mark), 32 cells per word: 1/4 byte per cell of peak memory.
+  std::vector<std::uint64_t> marks_;
+  unsigned mark(CellId c) const {
+    return static_cast<unsigned>(marks_[c >> 5] >> ((c & 31u) * 2)) & 3u;
+  }
+  void set_mark(CellId c, unsigned m) {
+    std::uint64_t& w = marks_[c >> 5];
+    const unsigned shift = (c & 31u) * 2;
+    w = (w & ~(std::uint64_t{3} << shift)) | (std::uint64_t{m} << shift);
+  }
   std::vector<std::uint8_t> vertex_mark_;  // per point (weighted only)
   std::vector<CellId> conflict_;
   std::vector<CellId> stack_;
@@ -61,6 +71,10 @@ class Builder {
     std::uint32_t stamp;  // slot in use iff stamp == stamp_
   };
   std::vector<EdgeSlot> edge_table_;        // open addressing, power-of-two size
+  static constexpr std::size_t kLocal = 32;  // boundary vertices numbered 0..kLocal-1
+  std::vector<std::uint8_t> vertex_local_;   // per point: its number on the boundary, or 0
+  std::vector<VertexId> local_vertices_;
+  std::uint32_t edge_faces_[kLocal * kLocal] = {};
   std::uint32_t stamp_ = 0;
   std::vector<VertexId> cavity_vertices_;
   std::vector<HiddenPoint> raw_hidden_;
