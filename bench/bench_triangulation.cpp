@@ -6,12 +6,13 @@
 // Usage: bench_triangulation [--runs R] [--max N] [--huge] [--case NAME]
 //   --max N   largest uniform size of the ladder (default 1e6); --huge adds 1e7.
 // Columns: case, points, vertices, finite cells, hidden+merged, sort s, insertion s,
-// total s, bytes per point (peak RSS minus RSS before the points were generated, so the
+// total wall and CPU s, bytes per point (peak RSS minus RSS before the points were generated, so the
 // input points, which the triangulation owns, are included), walk steps and conflict
 // cells per point, and the share of predicate calls the filter could not decide (only in a
 // build with -Dcounters=true).
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -32,9 +33,17 @@ using rstruct::Point3;
 using rstruct::triangulation::RegularTriangulation3;
 
 struct Result {
-  double points, vertices, cells, removed, sort_s, insert_s, total_s, bytes_per_point,
+  double points, vertices, cells, removed, sort_s, insert_s, total_s, cpu_s, bytes_per_point,
       walk_per_point, conflict_per_point, filter_failure;
 };
+
+/// CPU seconds of this process: on a loaded machine the wall clock also counts the time
+/// other jobs hold the cores, so both are printed.
+double cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
 
 std::uint64_t mix(std::uint64_t& s) {
   std::uint64_t z = (s += 0x9E3779B97F4A7C15ull);
@@ -87,11 +96,13 @@ Result run_case(const std::string& name, std::size_t n, std::uint64_t seed) {
     for (double& w : weights) w = unit(seed) * 0.64 * spacing * spacing;
   }
   rstruct::predicates::reset_stage_counts();
+  const double cpu0 = cpu_seconds();
   rstruct::Stopwatch clock;
   const RegularTriangulation3 t = weights.empty()
                                       ? RegularTriangulation3(std::move(points))
                                       : RegularTriangulation3(std::move(points), std::move(weights));
   const double total = clock.seconds();
+  const double cpu = cpu_seconds() - cpu0;
   const double peak = static_cast<double>(rstruct::peak_memory_bytes());
   const double dn = static_cast<double>(n);
   const auto& s = t.stats();
@@ -102,6 +113,7 @@ Result run_case(const std::string& name, std::size_t n, std::uint64_t seed) {
           s.sort_seconds,
           s.insertion_seconds,
           total,
+          cpu,
           (peak - static_cast<double>(before)) / dn,
           static_cast<double>(s.walk_steps) / dn,
           static_cast<double>(s.conflict_cells) / dn,
@@ -154,9 +166,10 @@ void bench(const std::string& name, std::size_t n, int runs) {
     for (const Result& x : rs) v.push_back(x.*f);
     return median(v);
   };
-  std::printf("%-9s %10zu %10.0f %11.0f %8.0f %7.3f %7.3f %7.3f %7.1f %6.2f %6.2f", name.c_str(),
-              n, med(&Result::vertices), med(&Result::cells), med(&Result::removed),
-              med(&Result::sort_s), med(&Result::insert_s), med(&Result::total_s),
+  std::printf("%-9s %10zu %10.0f %11.0f %8.0f %7.3f %7.3f %7.3f %7.3f %7.1f %6.2f %6.2f",
+              name.c_str(), n, med(&Result::vertices), med(&Result::cells),
+              med(&Result::removed), med(&Result::sort_s), med(&Result::insert_s),
+              med(&Result::total_s), med(&Result::cpu_s),
               med(&Result::bytes_per_point), med(&Result::walk_per_point),
               med(&Result::conflict_per_point));
   const double f = med(&Result::filter_failure);
@@ -191,9 +204,9 @@ int main(int argc, char** argv) {
     }
   }
   std::printf("# medians of %d runs; the machine may be loaded by other jobs\n", runs);
-  std::printf("%-9s %10s %10s %11s %8s %7s %7s %7s %7s %6s %6s %9s\n", "case", "points",
-              "vertices", "fin.cells", "removed", "sort_s", "ins_s", "total_s", "B/pt",
-              "walk", "confl", "filt.fail");
+  std::printf("%-9s %10s %10s %11s %8s %7s %7s %7s %7s %7s %6s %6s %9s\n", "case", "points",
+              "vertices", "fin.cells", "removed", "sort_s", "ins_s", "total_s", "cpu_s",
+              "B/pt", "walk", "confl", "filt.fail");
   const auto want = [&](const char* c) { return only.empty() || only == c; };
   if (want("uniform")) {
     for (double n = 1e4; n <= max * 1.0001; n *= 10) bench("uniform", std::size_t(n), runs);

@@ -134,7 +134,8 @@ class RegularTriangulation3 {
   /// Delaunay triangulation of `points` (all weights zero; in-sphere fast path).
   /// \throws InvalidInput if a coordinate is not finite, if there are more than kMaxPoints
   ///   points, or if the points do not span R³ (fewer than 4 affinely independent points,
-  ///   or all coplanar); the message names the case.
+  ///   or all coplanar), or if more than 2^30 cells would be needed (neighbour links are
+  ///   32-bit: about 1.5·10^8 uniform points); the message names the case.
   explicit RegularTriangulation3(std::vector<Point3> points,
                                  const TriangulationOptions& options = {});
 

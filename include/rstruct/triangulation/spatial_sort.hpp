@@ -21,10 +21,11 @@ std::uint64_t hilbert_index_3d(std::uint32_t x, std::uint32_t y, std::uint32_t z
 /// \pre every coordinate finite.
 std::vector<std::uint32_t> hilbert_order(std::span<const Point3> points);
 
-/// BRIO order: the indices shuffled with `seed`, split into rounds of geometrically growing
-/// size (the last round holds the last 1 − 1/ratio_divisor of the shuffled indices, the
-/// round before it the same fraction of the rest, and so on down to a first round of at
-/// most `min_round` indices), each round sorted along the Hilbert curve.
+/// BRIO order: every index drawn into a random round (a function of `seed` and the index)
+/// with rounds of geometrically growing expected size (the last round holds each index with
+/// probability 1 − 1/ratio_divisor, the round before it the same share of the rest, and so
+/// on down to a first round of expected size at most `min_round`); rounds in order, each
+/// sorted along the Hilbert curve.
 /// \pre every coordinate finite; ratio_divisor >= 2.
 std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint64_t seed,
                                       std::uint32_t ratio_divisor = 4,
