@@ -25,6 +25,9 @@ struct ComponentResult {
   double seconds_to_best = 0.0;
   std::int64_t subgradient_iterations = 0;
   std::int64_t local_search_iterations = 0;
+  double greedy_seconds = 0.0;
+  double subgradient_seconds = 0.0;
+  double local_search_seconds = 0.0;
 };
 
 struct Budget {
@@ -95,6 +98,7 @@ void improve_by_local_search(const Instance& inst, detail::LagrangianState& st,
 
 ComponentResult solve_component(const Instance& inst, const Budget& budget, const Stopwatch& clock) {
   ComponentResult out;
+  const double t0 = clock.seconds();
   detail::LagrangianState st;
   st.cover = detail::greedy_cover(inst);
   st.cover_cost = inst.cost_of(st.cover);
@@ -103,6 +107,7 @@ ComponentResult solve_component(const Instance& inst, const Budget& budget, cons
   st.u = detail::initial_multipliers(inst);
   st.bound = detail::lagrangian_bound(inst, st.u);
   const double now = clock.seconds();
+  out.greedy_seconds = now - t0;
   detail::SubgradientOptions so;
   so.max_iterations = budget.subgradient_iterations;
   so.deadline = now + 0.3 * std::max(0.0, budget.deadline - now);
@@ -110,9 +115,12 @@ ComponentResult solve_component(const Instance& inst, const Budget& budget, cons
   detail::subgradient(inst, st, so, clock);
   if (st.cover_cost < before) out.seconds_to_best = clock.seconds();
   out.subgradient_iterations = st.iterations;
+  const double t1 = clock.seconds();
+  out.subgradient_seconds = t1 - now;
   if (!detail::bound_closes_gap(inst, st.bound, st.cover_cost)) {
     improve_by_local_search(inst, st, budget, clock, out);
   }
+  out.local_search_seconds = clock.seconds() - t1;
   out.cover = st.cover;
   out.cost = st.cover_cost;
   out.u = st.u;
@@ -133,6 +141,7 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
   sol.stats.dominated_rows = red.dominated_rows;
   sol.stats.dominated_columns = red.dominated_cols;
   sol.stats.components = static_cast<std::int64_t>(red.components.size());
+  sol.stats.reduction_seconds = clock.seconds();
   std::vector<double> u(static_cast<std::size_t>(inst.num_rows()), 0.0);
   for (const auto& [row, value] : red.forced_multipliers) u[row] = value;
   std::vector<std::int32_t> cover = red.fixed_cols;
@@ -160,12 +169,16 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
     sol.stats.seconds_to_best = std::max(sol.stats.seconds_to_best, r.seconds_to_best);
     sol.stats.subgradient_iterations += r.subgradient_iterations;
     sol.stats.local_search_iterations += r.local_search_iterations;
+    sol.stats.greedy_seconds += r.greedy_seconds;
+    sol.stats.subgradient_seconds += r.subgradient_seconds;
+    sol.stats.local_search_seconds += r.local_search_seconds;
   }
   std::sort(cover.begin(), cover.end());
   RSTRUCT_ASSERT_MSG(inst.is_cover(cover), "set cover: solver produced a non-cover");
   sol.columns = cover;
   sol.cost = inst.cost_of(cover);
   sol.stats.greedy_cost = greedy_cost;
+  const double t_cert = clock.seconds();
   Certificate& cert = sol.certificate;
   cert.num_rows = inst.num_rows();
   cert.num_cols = inst.num_cols();
@@ -177,6 +190,7 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
   cert.cost_claim = exact_cost_text(inst, cover, cert.unicost);
   sol.gap = sol.cost > 0 ? (sol.cost - sol.lower_bound) / sol.cost : 0.0;
   sol.optimal = sol.lower_bound >= sol.cost;
+  sol.stats.certificate_seconds = clock.seconds() - t_cert;
   sol.stats.seconds = clock.seconds();
   return sol;
 }

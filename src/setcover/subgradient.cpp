@@ -95,7 +95,7 @@ void subgradient(const Instance& inst, LagrangianState& state, const Subgradient
       state.u = u;
     }
     if (use_core) {
-      core = build_core(inst, reduced, state.cover, 0.1 * min_cost);
+      core = build_core(inst, reduced, state.cover, 0.0);
       core_mask.assign(static_cast<std::size_t>(inst.num_cols()), 0);
       for (std::int32_t j : core) core_mask[j] = 1;
     }

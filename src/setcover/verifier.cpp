@@ -252,7 +252,7 @@ std::string Verdict::summary() const {
     out << "INVALID: " << (problems.empty() ? std::string("unknown") : problems.front());
     return out.str();
   }
-  out << "VALID cost " << cost << " bound " << bound << " gap " << gap;
+  out << "VALID cost " << cost << " bound " << bound << " gap " << 100.0 * gap << "%";
   return out.str();
 }
 

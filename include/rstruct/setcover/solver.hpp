@@ -42,6 +42,11 @@ struct SolverStats {
   std::int64_t components = 0;
   std::int64_t subgradient_iterations = 0;
   std::int64_t local_search_iterations = 0;
+  double reduction_seconds = 0.0;
+  double greedy_seconds = 0.0;
+  double subgradient_seconds = 0.0;
+  double local_search_seconds = 0.0;
+  double certificate_seconds = 0.0;
 };
 
 struct Solution {
