@@ -113,6 +113,7 @@ ComponentResult solve_component(const Instance& inst, const Budget& budget, cons
   so.deadline = now + 0.3 * std::max(0.0, budget.deadline - now);
   const double before = st.cover_cost;
   detail::subgradient(inst, st, so, clock);
+  detail::coordinate_ascent(inst, st, 20, so.deadline, clock);
   if (st.cover_cost < before) out.seconds_to_best = clock.seconds();
   out.subgradient_iterations = st.iterations;
   const double t1 = clock.seconds();
