@@ -84,7 +84,7 @@ void run_orlib(const Args& args) {
     return key(a) < key(b);
   });
   std::printf("%-7s %-8s %5s %5s %9s %9s %7s %7s %7s %7s %8s %s\n", "inst", "mode", "rows", "cols",
-              "cost", "bound", "gap%", "secs", "t_best", "best", "cost-bk", "cert");
+              "cost", "bound", "gap%", "secs", "t_best", "best", "cost-bk", "cert proven");
   int hits[2] = {0, 0}, total[2] = {0, 0};
   for (const fs::path& f : files) {
     const std::string name = f.stem().string();
@@ -106,10 +106,10 @@ void run_orlib(const Args& args) {
       if (mode == 1 && kUnicostBest.count(name)) best = kUnicostBest.at(name);
       ++total[mode];
       if (sol.cost <= best) ++hits[mode];
-      std::printf("%-7s %-8s %5d %5d %9.0f %9.0f %7.2f %7.2f %7.2f %7.0f %8.0f %s\n", name.c_str(),
+      std::printf("%-7s %-8s %5d %5d %9.0f %9.0f %7.2f %7.2f %7.2f %7.0f %8.0f %s %s\n", name.c_str(),
                   mode == 0 ? "weighted" : "unicost", inst.num_rows(), inst.num_cols(), sol.cost,
                   sol.lower_bound, 100.0 * sol.gap, sol.stats.seconds, sol.stats.seconds_to_best,
-                  best, sol.cost - best, v.valid ? "VALID" : "INVALID");
+                  best, sol.cost - best, v.valid ? "VALID" : "INVALID", sol.proven_optimal ? "yes" : "no");
       std::fflush(stdout);
     }
   }

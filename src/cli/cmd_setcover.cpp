@@ -66,6 +66,7 @@ class SetCoverCommand : public Command {
     d["lower_bound"] = sol.lower_bound;
     d["gap"] = sol.gap;
     d["optimal"] = sol.optimal;
+    d["proven_optimal"] = sol.proven_optimal;
     d["cover_size"] = sol.columns.size();
     d["seconds_to_best"] = sol.stats.seconds_to_best;
     d["forced_columns"] = sol.stats.forced_columns;
@@ -80,7 +81,7 @@ class SetCoverCommand : public Command {
       out.commit();
     }
     std::printf("cost %.17g bound %.17g gap %.4f%% columns %zu %s\n", sol.cost, sol.lower_bound,
-                100.0 * sol.gap, sol.columns.size(), sol.optimal ? "optimal" : "feasible");
+                100.0 * sol.gap, sol.columns.size(), sol.optimal ? "optimal (certified)" : sol.proven_optimal ? "optimal (proven by search, not by the certificate)" : "feasible");
     return 0;
   }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "branch_and_bound.hpp"
 #include "greedy.hpp"
 #include "local_search.hpp"
 #include "reduction.hpp"
@@ -28,7 +29,13 @@ struct ComponentResult {
   double greedy_seconds = 0.0;
   double subgradient_seconds = 0.0;
   double local_search_seconds = 0.0;
+  bool proven = false;  ///< no cheaper cover exists (bound, reduced-cost fixing or search)
+  std::int64_t exact_nodes = 0;
 };
+
+/// Components whose surviving columns number at most this get an exact search first.
+constexpr std::int32_t kExactColumns = 60;
+constexpr std::int64_t kExactNodes = 300'000;
 
 struct Budget {
   double deadline = 0.0;              ///< seconds on the solver clock
@@ -72,8 +79,25 @@ void improve_by_local_search(const Instance& inst, detail::LagrangianState& st,
     costs.push_back(inst.cost(j));
   }
   // A row no surviving column covers: no cover is cheaper than the incumbent.
-  if (std::find(row_ok.begin(), row_ok.end(), 0) != row_ok.end()) return;
+  if (std::find(row_ok.begin(), row_ok.end(), 0) != row_ok.end()) {
+    out.proven = true;
+    return;
+  }
   const Instance sub = Instance::from_csr(inst.num_rows(), start, entries, std::move(costs));
+  if (sub.num_cols() <= kExactColumns) {
+    const auto bb = detail::branch_and_bound(sub, st.cover_cost, kExactNodes, budget.deadline, clock);
+    out.exact_nodes = bb.nodes;
+    if (!bb.best.empty() && bb.best_cost < st.cover_cost) {
+      st.cover.clear();
+      for (std::int32_t k : bb.best) st.cover.push_back(map[k]);
+      st.cover_cost = inst.cost_of(st.cover);
+      out.seconds_to_best = clock.seconds();
+    }
+    if (bb.finished) {
+      out.proven = true;
+      return;
+    }
+  }
   std::vector<std::int32_t> local_of(static_cast<std::size_t>(inst.num_cols()), -1);
   for (std::size_t k = 0; k < map.size(); ++k) local_of[map[k]] = static_cast<std::int32_t>(k);
   std::vector<std::int32_t> seed_cols;
@@ -118,7 +142,9 @@ ComponentResult solve_component(const Instance& inst, const Budget& budget, cons
   out.subgradient_iterations = st.iterations;
   const double t1 = clock.seconds();
   out.subgradient_seconds = t1 - now;
-  if (!detail::bound_closes_gap(inst, st.bound, st.cover_cost)) {
+  if (detail::bound_closes_gap(inst, st.bound, st.cover_cost)) {
+    out.proven = true;
+  } else {
     improve_by_local_search(inst, st, budget, clock, out);
   }
   out.local_search_seconds = clock.seconds() - t1;
@@ -147,6 +173,7 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
   for (const auto& [row, value] : red.forced_multipliers) u[row] = value;
   std::vector<std::int32_t> cover = red.fixed_cols;
   double greedy_cost = inst.cost_of(red.fixed_cols);
+  bool all_proven = true;
   std::int64_t remaining_nnz = 0;
   for (const Component& c : red.components) remaining_nnz += c.instance.num_entries() + 1;
   for (std::size_t k = 0; k < red.components.size(); ++k) {
@@ -173,6 +200,8 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
     sol.stats.greedy_seconds += r.greedy_seconds;
     sol.stats.subgradient_seconds += r.subgradient_seconds;
     sol.stats.local_search_seconds += r.local_search_seconds;
+    sol.stats.exact_nodes += r.exact_nodes;
+    all_proven = all_proven && r.proven;
   }
   std::sort(cover.begin(), cover.end());
   RSTRUCT_ASSERT_MSG(inst.is_cover(cover), "set cover: solver produced a non-cover");
@@ -191,6 +220,7 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
   cert.cost_claim = exact_cost_text(inst, cover, cert.unicost);
   sol.gap = sol.cost > 0 ? (sol.cost - sol.lower_bound) / sol.cost : 0.0;
   sol.optimal = sol.lower_bound >= sol.cost;
+  sol.proven_optimal = sol.optimal || all_proven;
   sol.stats.certificate_seconds = clock.seconds() - t_cert;
   sol.stats.seconds = clock.seconds();
   return sol;
