@@ -39,6 +39,8 @@ struct Args {
   bool geometric = false;
   double geometric_limit = 2.0;
   std::int32_t samples = 100000;
+  double only_rho = 0.0;  // 0: both 0.03 and 0.1
+  int only_shape = -1;    // -1: torus and double torus
 };
 
 // Best-known unicost values from the data README (families 4, 5, 6, A).
@@ -191,7 +193,9 @@ void run_geometric(const Args& args) {
   std::printf("\n%-12s %5s %7s %7s %9s %7s %8s %8s %6s %7s %7s %7s %s\n", "surface", "rho", "rows",
               "cols", "entries", "build_s", "cost", "bound", "gap%", "secs", "t_best", "forced", "cert");
   for (int shape = 0; shape < 2; ++shape) {
+    if (args.only_shape >= 0 && shape != args.only_shape) continue;
     for (double rho : {0.03, 0.1}) {
+      if (args.only_rho > 0 && rho != args.only_rho) continue;
       rstruct::Stopwatch build;
       const Instance inst = geometric_instance(shape == 1, args.samples, rho, args.seed);
       const double build_s = build.seconds();
@@ -238,6 +242,8 @@ int main(int argc, char** argv) {
     else if (a == "--geometric") args.geometric = true;
     else if (a == "--geometric-limit") args.geometric_limit = std::stod(value());
     else if (a == "--samples") args.samples = std::stoi(value());
+    else if (a == "--rho") args.only_rho = std::stod(value());
+    else if (a == "--shape") args.only_shape = std::stoi(value());
     else {
       std::fprintf(stderr, "unknown argument %s\n", a.c_str());
       return 2;

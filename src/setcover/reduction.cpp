@@ -12,8 +12,10 @@ namespace {
 /// Alive flags and alive counts over the original instance.
 class Presolver {
  public:
-  explicit Presolver(const Instance& inst)
+  Presolver(const Instance& inst, double deadline, const Stopwatch& clock)
       : inst_(inst),
+        deadline_(deadline),
+        clock_(clock),
         row_alive_(static_cast<std::size_t>(inst.num_rows()), 1),
         col_alive_(static_cast<std::size_t>(inst.num_cols()), 1),
         row_len_(static_cast<std::size_t>(inst.num_rows())),
@@ -94,6 +96,7 @@ class Presolver {
     bool changed = false;
     for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
       if (!col_alive_[j]) continue;
+      if ((j & 1023) == 0 && out_of_time()) break;
       std::int32_t pivot = -1;
       for (std::int32_t i : inst_.column(j)) {
         if (row_alive_[i] && (pivot < 0 || row_len_[i] < row_len_[pivot])) pivot = i;
@@ -127,6 +130,7 @@ class Presolver {
     bool changed = false;
     for (std::int32_t k = 0; k < inst_.num_rows(); ++k) {
       if (!row_alive_[k]) continue;
+      if ((k & 1023) == 0 && out_of_time()) break;
       std::int32_t pivot = -1;
       for (std::int32_t j : inst_.row(k)) {
         if (col_alive_[j] && (pivot < 0 || col_len_[j] < col_len_[pivot])) pivot = j;
@@ -150,11 +154,14 @@ class Presolver {
   }
 
   void split_components();
+  bool out_of_time() const { return clock_.seconds() > deadline_; }
 
   Reduction out;
 
  private:
   const Instance& inst_;
+  double deadline_;
+  const Stopwatch& clock_;
   std::vector<char> row_alive_, col_alive_;
   std::vector<std::int32_t> row_len_, col_len_;
   std::vector<std::int32_t> mark_;
@@ -224,12 +231,12 @@ void Presolver::split_components() {
 
 }  // namespace
 
-Reduction reduce(const Instance& inst, bool use_domination) {
-  Presolver p(inst);
+Reduction reduce(const Instance& inst, bool use_domination, double deadline, const Stopwatch& clock) {
+  Presolver p(inst, deadline, clock);
   p.take_zero_cost();
   p.force_singletons();
   // Domination passes are the expensive part: two rounds catch nearly everything.
-  for (int pass = 0; use_domination && pass < 2; ++pass) {
+  for (int pass = 0; use_domination && pass < 2 && !p.out_of_time(); ++pass) {
     p.take_signatures();
     bool changed = p.remove_dominated_rows();
     p.take_signatures();

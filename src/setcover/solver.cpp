@@ -130,6 +130,9 @@ ComponentResult solve_component(const Instance& inst, const Budget& budget, cons
   out.seconds_to_best = clock.seconds();
   st.u = detail::initial_multipliers(inst);
   st.bound = detail::lagrangian_bound(inst, st.u);
+  // Coordinate ascent first: a few O(entries) sweeps give a good bound on large sparse
+  // instances, where each subgradient iteration is as expensive as a sweep.
+  detail::coordinate_ascent(inst, st, 5, t0 + 0.2 * std::max(0.0, budget.deadline - t0), clock);
   const double now = clock.seconds();
   out.greedy_seconds = now - t0;
   detail::SubgradientOptions so;
@@ -163,7 +166,8 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
                             " (0-based) is covered by no column; no cover exists");
   }
   Solution sol;
-  const detail::Reduction red = detail::reduce(inst, options.use_domination);
+  const detail::Reduction red =
+      detail::reduce(inst, options.use_domination, 0.5 * options.time_limit, clock);
   sol.stats.forced_columns = red.forced_cols;
   sol.stats.dominated_rows = red.dominated_rows;
   sol.stats.dominated_columns = red.dominated_cols;
