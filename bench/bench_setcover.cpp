@@ -9,11 +9,15 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <cmath>
 #include <map>
+#include <random>
+#include <unordered_map>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "rstruct/core/stopwatch.hpp"
 #include "rstruct/setcover/read_instance.hpp"
 #include "rstruct/setcover/solver.hpp"
 #include "rstruct/setcover/verifier.hpp"
@@ -32,6 +36,11 @@ struct Args {
   bool weighted = true;
   bool unicost = true;
   std::uint64_t seed = 1;
+  bool geometric = false;
+  double geometric_limit = 2.0;
+  std::int32_t samples = 100000;
+  double only_rho = 0.0;  // 0: both 0.03 and 0.1
+  int only_shape = -1;    // -1: torus and double torus
 };
 
 // Best-known unicost values from the data README (families 4, 5, 6, A).
@@ -77,7 +86,7 @@ void run_orlib(const Args& args) {
     return key(a) < key(b);
   });
   std::printf("%-7s %-8s %5s %5s %9s %9s %7s %7s %7s %7s %8s %s\n", "inst", "mode", "rows", "cols",
-              "cost", "bound", "gap%", "secs", "t_best", "best", "cost-bk", "cert");
+              "cost", "bound", "gap%", "secs", "t_best", "best", "cost-bk", "cert proven");
   int hits[2] = {0, 0}, total[2] = {0, 0};
   for (const fs::path& f : files) {
     const std::string name = f.stem().string();
@@ -99,15 +108,120 @@ void run_orlib(const Args& args) {
       if (mode == 1 && kUnicostBest.count(name)) best = kUnicostBest.at(name);
       ++total[mode];
       if (sol.cost <= best) ++hits[mode];
-      std::printf("%-7s %-8s %5d %5d %9.0f %9.0f %7.2f %7.2f %7.2f %7.0f %8.0f %s\n", name.c_str(),
+      std::printf("%-7s %-8s %5d %5d %9.0f %9.0f %7.2f %7.2f %7.2f %7.0f %8.0f %s %s\n", name.c_str(),
                   mode == 0 ? "weighted" : "unicost", inst.num_rows(), inst.num_cols(), sol.cost,
                   sol.lower_bound, 100.0 * sol.gap, sol.stats.seconds, sol.stats.seconds_to_best,
-                  best, sol.cost - best, v.valid ? "VALID" : "INVALID");
+                  best, sol.cost - best, v.valid ? "VALID" : "INVALID", sol.proven_optimal ? "yes" : "no");
       std::fflush(stdout);
     }
   }
   std::printf("weighted: %d/%d at best known; unicost: %d/%d at best known\n", hits[0], total[0],
               hits[1], total[1]);
+}
+
+// ---- Synthetic geometric instances (until the poles module provides real ones) ----------
+// Samples uniformly distributed (by area) on a torus of radii R = 3, a = 1 around the z axis,
+// or on the union of two such tori centred at x = ±2.6 (a genus-2 surface). The local scale
+// of a sample is the torus's local feature size min(a, distance to the axis of symmetry);
+// column j covers row t iff |p_j − p_t| ≤ ρ̃ · scale(p_j) (DESIGN.md §2).
+
+struct Point {
+  double x, y, z;
+};
+
+constexpr double kMajor = 3.0, kMinor = 1.0, kShift = 2.6;
+
+Point torus_point(std::mt19937_64& rng, double cx) {
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * M_PI), unit(0.0, 1.0);
+  while (true) {  // rejection sampling for the area element (R + a cos v)
+    const double u = angle(rng), v = angle(rng);
+    if (unit(rng) * (kMajor + kMinor) > kMajor + kMinor * std::cos(v)) continue;
+    const double w = kMajor + kMinor * std::cos(v);
+    return {cx + w * std::cos(u), w * std::sin(u), kMinor * std::sin(v)};
+  }
+}
+
+/// Signed distance-like test: is p strictly inside the solid torus centred at (cx, 0, 0)?
+bool inside_torus(const Point& p, double cx) {
+  const double rho = std::hypot(p.x - cx, p.y) - kMajor;
+  return rho * rho + p.z * p.z < kMinor * kMinor;
+}
+
+double local_scale(const Point& p, double cx) {
+  return std::min(kMinor, std::hypot(p.x - cx, p.y));
+}
+
+Instance geometric_instance(bool double_torus, std::int32_t n, double rho, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<Point> pts;
+  std::vector<double> scale;
+  while (static_cast<std::int32_t>(pts.size()) < n) {
+    const double cx = double_torus ? (rng() % 2 == 0 ? -kShift : kShift) : 0.0;
+    const Point p = torus_point(rng, cx);
+    if (double_torus && inside_torus(p, -cx)) continue;  // keep the union's boundary only
+    pts.push_back(p);
+    scale.push_back(local_scale(p, cx));
+  }
+  const double cell = rho * kMinor;  // the largest radius
+  auto key = [&](long long a, long long b, long long c) { return (a * 73856093LL) ^ (b * 19349663LL) ^ (c * 83492791LL); };
+  auto coord = [&](double v) { return static_cast<long long>(std::floor(v / cell)); };
+  std::unordered_map<long long, std::vector<std::int32_t>> grid;
+  for (std::int32_t t = 0; t < n; ++t) grid[key(coord(pts[t].x), coord(pts[t].y), coord(pts[t].z))].push_back(t);
+  std::vector<std::int64_t> start{0};
+  std::vector<std::int32_t> rows;
+  for (std::int32_t j = 0; j < n; ++j) {
+    const Point& c = pts[j];
+    const double r = rho * scale[j];
+    const long long cx = coord(c.x), cy = coord(c.y), cz = coord(c.z);
+    for (long long a = cx - 1; a <= cx + 1; ++a)
+      for (long long b = cy - 1; b <= cy + 1; ++b)
+        for (long long d = cz - 1; d <= cz + 1; ++d) {
+          const auto it = grid.find(key(a, b, d));
+          if (it == grid.end()) continue;
+          for (std::int32_t t : it->second) {
+            const double dx = pts[t].x - c.x, dy = pts[t].y - c.y, dz = pts[t].z - c.z;
+            if (coord(pts[t].x) == a && coord(pts[t].y) == b && coord(pts[t].z) == d &&
+                dx * dx + dy * dy + dz * dz <= r * r) rows.push_back(t);
+          }
+        }
+    start.push_back(static_cast<std::int64_t>(rows.size()));
+  }
+  return Instance::from_csr(n, start, rows);
+}
+
+void run_geometric(const Args& args) {
+  std::printf("\n%-12s %5s %7s %7s %9s %7s %8s %8s %6s %7s %7s %7s %s\n", "surface", "rho", "rows",
+              "cols", "entries", "build_s", "cost", "bound", "gap%", "secs", "t_best", "forced", "cert");
+  for (int shape = 0; shape < 2; ++shape) {
+    if (args.only_shape >= 0 && shape != args.only_shape) continue;
+    for (double rho : {0.03, 0.1}) {
+      if (args.only_rho > 0 && rho != args.only_rho) continue;
+      rstruct::Stopwatch build;
+      const Instance inst = geometric_instance(shape == 1, args.samples, rho, args.seed);
+      const double build_s = build.seconds();
+      SolverOptions opt;
+      opt.time_limit = args.geometric_limit;
+      opt.seed = args.seed;
+      const Solution sol = solve(inst, opt);
+      std::vector<std::vector<std::int32_t>> cols(static_cast<std::size_t>(inst.num_cols()));
+      for (std::int32_t j = 0; j < inst.num_cols(); ++j) cols[j].assign(inst.column(j).begin(), inst.column(j).end());
+      std::istringstream cert(certificate_text(sol.certificate));
+      const Verdict v = verify_certificate(inst.num_rows(), cols, {}, cert);
+      std::printf("%-12s %5.2f %7d %7d %9lld %7.2f %8.0f %8.0f %6.2f %7.2f %7.2f %7lld %s\n",
+                  shape == 0 ? "torus" : "double-torus", rho, inst.num_rows(), inst.num_cols(),
+                  static_cast<long long>(inst.num_entries()), build_s, sol.cost, sol.lower_bound,
+                  100.0 * sol.gap, sol.stats.seconds, sol.stats.seconds_to_best,
+                  static_cast<long long>(sol.stats.forced_columns), v.valid ? "VALID" : "INVALID");
+      std::printf("    stages: reduce %.2f greedy %.2f subgradient %.2f (%lld it) local search %.2f "
+                  "(%lld it) certificate %.2f; %lld components, %lld dominated rows, %lld dominated cols\n",
+                  sol.stats.reduction_seconds, sol.stats.greedy_seconds, sol.stats.subgradient_seconds,
+                  static_cast<long long>(sol.stats.subgradient_iterations), sol.stats.local_search_seconds,
+                  static_cast<long long>(sol.stats.local_search_iterations), sol.stats.certificate_seconds,
+                  static_cast<long long>(sol.stats.components), static_cast<long long>(sol.stats.dominated_rows),
+                  static_cast<long long>(sol.stats.dominated_columns));
+      std::fflush(stdout);
+    }
+  }
 }
 
 }  // namespace
@@ -125,11 +239,17 @@ int main(int argc, char** argv) {
     else if (a == "--weighted-only") args.unicost = false;
     else if (a == "--unicost-only") args.weighted = false;
     else if (a == "--seed") args.seed = std::stoull(value());
+    else if (a == "--geometric") args.geometric = true;
+    else if (a == "--geometric-limit") args.geometric_limit = std::stod(value());
+    else if (a == "--samples") args.samples = std::stoi(value());
+    else if (a == "--rho") args.only_rho = std::stod(value());
+    else if (a == "--shape") args.only_shape = std::stoi(value());
     else {
       std::fprintf(stderr, "unknown argument %s\n", a.c_str());
       return 2;
     }
   }
   if (args.orlib) run_orlib(args);
+  if (args.geometric) run_geometric(args);
   return 0;
 }

@@ -10,6 +10,11 @@ namespace rstruct::setcover::detail {
 
 namespace {
 
+/// Configuration checking on rows: a column becomes addable again when one of its rows
+/// changes between covered and uncovered (cheap: those rows are visited anyway), instead of
+/// when any column sharing a row changes (RWLS; costs a sweep over all neighbours per move).
+constexpr bool kRowConfiguration = true;
+
 class RowWeighting {
  public:
   RowWeighting(const Instance& inst, std::uint64_t seed)
@@ -32,7 +37,10 @@ class RowWeighting {
   void add(std::int32_t k) {
     for (std::int32_t i : inst_.column(k)) {
       if (cover_[i] == 0) {
-        for (std::int32_t l : inst_.row(i)) score_[l] -= weight_[i];
+        for (std::int32_t l : inst_.row(i)) {
+          score_[l] -= weight_[i];
+          if (kRowConfiguration) can_add_[l] = 1;
+        }
         score_[k] += weight_[i];
         pop_uncovered(i);
       } else if (cover_[i] == 1) {
@@ -52,7 +60,10 @@ class RowWeighting {
     for (std::int32_t i : inst_.column(j)) {
       --cover_[i];
       if (cover_[i] == 0) {
-        for (std::int32_t l : inst_.row(i)) score_[l] += weight_[i];
+        for (std::int32_t l : inst_.row(i)) {
+          score_[l] += weight_[i];
+          if (kRowConfiguration) can_add_[l] = 1;
+        }
         score_[j] -= weight_[i];
         push_uncovered(i);
       } else if (cover_[i] == 1) {
@@ -161,6 +172,7 @@ class RowWeighting {
     RSTRUCT_ASSERT_MSG(false, "local search: coverage count out of sync");
   }
   void touch_neighbours(std::int32_t j) {
+    if (kRowConfiguration) return;
     for (std::int32_t i : inst_.column(j)) {
       for (std::int32_t l : inst_.row(i)) can_add_[l] = 1;
     }
@@ -208,7 +220,7 @@ LocalSearchResult row_weighting_search(const Instance& inst, const std::vector<s
       s.remove(s.pick_removal(-1));
       continue;
     }
-    if (++it > options.max_iterations || ((it & 255) == 0 && clock.seconds() > options.deadline)) break;
+    if (++it > options.max_iterations || ((it & 63) == 0 && clock.seconds() > options.deadline)) break;
     const std::int32_t k = s.pick_addition();
     s.add(k);
     s.stamp_[k] = it;

@@ -12,8 +12,10 @@ namespace {
 /// Alive flags and alive counts over the original instance.
 class Presolver {
  public:
-  explicit Presolver(const Instance& inst)
+  Presolver(const Instance& inst, double deadline, const Stopwatch& clock)
       : inst_(inst),
+        deadline_(deadline),
+        clock_(clock),
         row_alive_(static_cast<std::size_t>(inst.num_rows()), 1),
         col_alive_(static_cast<std::size_t>(inst.num_cols()), 1),
         row_len_(static_cast<std::size_t>(inst.num_rows())),
@@ -21,6 +23,26 @@ class Presolver {
         mark_(static_cast<std::size_t>(std::max(inst.num_rows(), inst.num_cols())), 0) {
     for (std::int32_t i = 0; i < inst.num_rows(); ++i) row_len_[i] = static_cast<std::int32_t>(inst.row(i).size());
     for (std::int32_t j = 0; j < inst.num_cols(); ++j) col_len_[j] = static_cast<std::int32_t>(inst.column(j).size());
+  }
+
+  /// 64-bit Bloom signatures of the alive columns of every row and alive rows of every
+  /// column, for a cheap "cannot be a subset" test. Sets only shrink during a pass, so a
+  /// signature taken at the pass start over-approximates: it can hide a domination (less
+  /// reduction) but never fake one (the exact count below decides).
+  void take_signatures() {
+    row_sig_.assign(static_cast<std::size_t>(inst_.num_rows()), 0);
+    col_sig_.assign(static_cast<std::size_t>(inst_.num_cols()), 0);
+    for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
+      if (!col_alive_[j]) continue;
+      for (std::int32_t i : inst_.column(j)) {
+        if (!row_alive_[i]) continue;
+        row_sig_[i] |= bit(j);
+        col_sig_[j] |= bit(i);
+      }
+    }
+  }
+  static std::uint64_t bit(std::int32_t x) {
+    return std::uint64_t{1} << ((static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ULL) >> 58);
   }
 
   void kill_col(std::int32_t j) {
@@ -74,6 +96,7 @@ class Presolver {
     bool changed = false;
     for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
       if (!col_alive_[j]) continue;
+      if ((j & 1023) == 0 && out_of_time()) break;
       std::int32_t pivot = -1;
       for (std::int32_t i : inst_.column(j)) {
         if (row_alive_[i] && (pivot < 0 || row_len_[i] < row_len_[pivot])) pivot = i;
@@ -83,6 +106,7 @@ class Presolver {
       for (std::int32_t k : inst_.row(pivot)) {
         if (k == j || !col_alive_[k] || col_len_[k] < col_len_[j] || inst_.cost(k) > inst_.cost(j)) continue;
         if (col_len_[k] == col_len_[j] && inst_.cost(k) == inst_.cost(j) && k > j) continue;
+        if ((col_sig_[j] & ~col_sig_[k]) != 0) continue;
         std::int32_t hits = 0;
         for (std::int32_t i : inst_.column(k)) hits += mark_[i];
         if (hits == col_len_[j]) {
@@ -106,6 +130,7 @@ class Presolver {
     bool changed = false;
     for (std::int32_t k = 0; k < inst_.num_rows(); ++k) {
       if (!row_alive_[k]) continue;
+      if ((k & 1023) == 0 && out_of_time()) break;
       std::int32_t pivot = -1;
       for (std::int32_t j : inst_.row(k)) {
         if (col_alive_[j] && (pivot < 0 || col_len_[j] < col_len_[pivot])) pivot = j;
@@ -114,6 +139,7 @@ class Presolver {
       for (std::int32_t i : inst_.column(pivot)) {
         if (i == k || !row_alive_[i] || row_len_[i] < row_len_[k]) continue;
         if (row_len_[i] == row_len_[k] && i < k) continue;
+        if ((row_sig_[k] & ~row_sig_[i]) != 0) continue;
         std::int32_t hits = 0;
         for (std::int32_t j : inst_.row(i)) hits += mark_[j];
         if (hits == row_len_[k]) {
@@ -128,14 +154,18 @@ class Presolver {
   }
 
   void split_components();
+  bool out_of_time() const { return clock_.seconds() > deadline_; }
 
   Reduction out;
 
  private:
   const Instance& inst_;
+  double deadline_;
+  const Stopwatch& clock_;
   std::vector<char> row_alive_, col_alive_;
   std::vector<std::int32_t> row_len_, col_len_;
   std::vector<std::int32_t> mark_;
+  std::vector<std::uint64_t> row_sig_, col_sig_;
 };
 
 std::int32_t find_root(std::vector<std::int32_t>& parent, std::int32_t x) {
@@ -201,17 +231,20 @@ void Presolver::split_components() {
 
 }  // namespace
 
-Reduction reduce(const Instance& inst, bool use_domination) {
-  Presolver p(inst);
+Reduction reduce(const Instance& inst, bool use_domination, double deadline, const Stopwatch& clock) {
+  Presolver p(inst, deadline, clock);
   p.take_zero_cost();
-  for (int pass = 0; pass < 8; ++pass) {
-    bool changed = p.force_singletons();
-    if (use_domination) {
-      changed = p.remove_dominated_rows() || changed;
-      changed = p.remove_dominated_cols() || changed;
-      changed = p.force_singletons() || changed;
-    }
+  p.force_singletons();
+  // Domination passes are the expensive part: two rounds catch nearly everything.
+  for (int pass = 0; use_domination && pass < 2 && !p.out_of_time(); ++pass) {
+    p.take_signatures();
+    bool changed = p.remove_dominated_rows();
+    p.take_signatures();
+    changed = p.remove_dominated_cols() || changed;
+    changed = p.force_singletons() || changed;
     if (!changed) break;
+  }
+  while (p.force_singletons()) {
   }
   p.split_components();
   return std::move(p.out);

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "rstruct/core/stopwatch.hpp"
 #include "rstruct/setcover/instance.hpp"
 
 namespace rstruct::setcover::detail {
@@ -28,7 +29,8 @@ struct Reduction {
   std::int64_t forced_cols = 0;
 };
 
-/// Reduces `inst`. \pre every row is covered by some column.
-Reduction reduce(const Instance& inst, bool use_domination = true);
+/// Reduces `inst`. Domination checks stop (leaving a valid, less reduced instance) once
+/// `clock` passes `deadline`. \pre every row is covered by some column.
+Reduction reduce(const Instance& inst, bool use_domination, double deadline, const Stopwatch& clock);
 
 }  // namespace rstruct::setcover::detail

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "branch_and_bound.hpp"
 #include "greedy.hpp"
 #include "local_search.hpp"
 #include "reduction.hpp"
@@ -25,7 +26,16 @@ struct ComponentResult {
   double seconds_to_best = 0.0;
   std::int64_t subgradient_iterations = 0;
   std::int64_t local_search_iterations = 0;
+  double greedy_seconds = 0.0;
+  double subgradient_seconds = 0.0;
+  double local_search_seconds = 0.0;
+  bool proven = false;  ///< no cheaper cover exists (bound, reduced-cost fixing or search)
+  std::int64_t exact_nodes = 0;
 };
+
+/// Components whose surviving columns number at most this get an exact search first.
+constexpr std::int32_t kExactColumns = 60;
+constexpr std::int64_t kExactNodes = 300'000;
 
 struct Budget {
   double deadline = 0.0;              ///< seconds on the solver clock
@@ -69,8 +79,25 @@ void improve_by_local_search(const Instance& inst, detail::LagrangianState& st,
     costs.push_back(inst.cost(j));
   }
   // A row no surviving column covers: no cover is cheaper than the incumbent.
-  if (std::find(row_ok.begin(), row_ok.end(), 0) != row_ok.end()) return;
+  if (std::find(row_ok.begin(), row_ok.end(), 0) != row_ok.end()) {
+    out.proven = true;
+    return;
+  }
   const Instance sub = Instance::from_csr(inst.num_rows(), start, entries, std::move(costs));
+  if (sub.num_cols() <= kExactColumns) {
+    const auto bb = detail::branch_and_bound(sub, st.cover_cost, kExactNodes, budget.deadline, clock);
+    out.exact_nodes = bb.nodes;
+    if (!bb.best.empty() && bb.best_cost < st.cover_cost) {
+      st.cover.clear();
+      for (std::int32_t k : bb.best) st.cover.push_back(map[k]);
+      st.cover_cost = inst.cost_of(st.cover);
+      out.seconds_to_best = clock.seconds();
+    }
+    if (bb.finished) {
+      out.proven = true;
+      return;
+    }
+  }
   std::vector<std::int32_t> local_of(static_cast<std::size_t>(inst.num_cols()), -1);
   for (std::size_t k = 0; k < map.size(); ++k) local_of[map[k]] = static_cast<std::int32_t>(k);
   std::vector<std::int32_t> seed_cols;
@@ -95,6 +122,7 @@ void improve_by_local_search(const Instance& inst, detail::LagrangianState& st,
 
 ComponentResult solve_component(const Instance& inst, const Budget& budget, const Stopwatch& clock) {
   ComponentResult out;
+  const double t0 = clock.seconds();
   detail::LagrangianState st;
   st.cover = detail::greedy_cover(inst);
   st.cover_cost = inst.cost_of(st.cover);
@@ -102,17 +130,27 @@ ComponentResult solve_component(const Instance& inst, const Budget& budget, cons
   out.seconds_to_best = clock.seconds();
   st.u = detail::initial_multipliers(inst);
   st.bound = detail::lagrangian_bound(inst, st.u);
+  // Coordinate ascent first: a few O(entries) sweeps give a good bound on large sparse
+  // instances, where each subgradient iteration is as expensive as a sweep.
+  detail::coordinate_ascent(inst, st, 5, t0 + 0.2 * std::max(0.0, budget.deadline - t0), clock);
   const double now = clock.seconds();
+  out.greedy_seconds = now - t0;
   detail::SubgradientOptions so;
   so.max_iterations = budget.subgradient_iterations;
   so.deadline = now + 0.3 * std::max(0.0, budget.deadline - now);
   const double before = st.cover_cost;
   detail::subgradient(inst, st, so, clock);
+  detail::coordinate_ascent(inst, st, 20, so.deadline, clock);
   if (st.cover_cost < before) out.seconds_to_best = clock.seconds();
   out.subgradient_iterations = st.iterations;
-  if (!detail::bound_closes_gap(inst, st.bound, st.cover_cost)) {
+  const double t1 = clock.seconds();
+  out.subgradient_seconds = t1 - now;
+  if (detail::bound_closes_gap(inst, st.bound, st.cover_cost)) {
+    out.proven = true;
+  } else {
     improve_by_local_search(inst, st, budget, clock, out);
   }
+  out.local_search_seconds = clock.seconds() - t1;
   out.cover = st.cover;
   out.cost = st.cover_cost;
   out.u = st.u;
@@ -128,15 +166,18 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
                             " (0-based) is covered by no column; no cover exists");
   }
   Solution sol;
-  const detail::Reduction red = detail::reduce(inst, options.use_domination);
+  const detail::Reduction red =
+      detail::reduce(inst, options.use_domination, 0.5 * options.time_limit, clock);
   sol.stats.forced_columns = red.forced_cols;
   sol.stats.dominated_rows = red.dominated_rows;
   sol.stats.dominated_columns = red.dominated_cols;
   sol.stats.components = static_cast<std::int64_t>(red.components.size());
+  sol.stats.reduction_seconds = clock.seconds();
   std::vector<double> u(static_cast<std::size_t>(inst.num_rows()), 0.0);
   for (const auto& [row, value] : red.forced_multipliers) u[row] = value;
   std::vector<std::int32_t> cover = red.fixed_cols;
   double greedy_cost = inst.cost_of(red.fixed_cols);
+  bool all_proven = true;
   std::int64_t remaining_nnz = 0;
   for (const Component& c : red.components) remaining_nnz += c.instance.num_entries() + 1;
   for (std::size_t k = 0; k < red.components.size(); ++k) {
@@ -160,12 +201,18 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
     sol.stats.seconds_to_best = std::max(sol.stats.seconds_to_best, r.seconds_to_best);
     sol.stats.subgradient_iterations += r.subgradient_iterations;
     sol.stats.local_search_iterations += r.local_search_iterations;
+    sol.stats.greedy_seconds += r.greedy_seconds;
+    sol.stats.subgradient_seconds += r.subgradient_seconds;
+    sol.stats.local_search_seconds += r.local_search_seconds;
+    sol.stats.exact_nodes += r.exact_nodes;
+    all_proven = all_proven && r.proven;
   }
   std::sort(cover.begin(), cover.end());
   RSTRUCT_ASSERT_MSG(inst.is_cover(cover), "set cover: solver produced a non-cover");
   sol.columns = cover;
   sol.cost = inst.cost_of(cover);
   sol.stats.greedy_cost = greedy_cost;
+  const double t_cert = clock.seconds();
   Certificate& cert = sol.certificate;
   cert.num_rows = inst.num_rows();
   cert.num_cols = inst.num_cols();
@@ -173,10 +220,20 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
   cert.cover = cover;
   cert.multipliers = to_fixed_point(u, cert.scale);
   sol.lower_bound = certified_lower_bound(inst, cert);
-  cert.bound_claim = exact_rational_text(sol.lower_bound);
+  double claim = sol.lower_bound;
+  if (!cert.unicost && !inst.has_integer_costs()) {
+    // Costs read from decimal text are within 2^-53 relative of their doubles, which moves L
+    // by at most 2^-53 Σ c_j: claim that much less so the verifier's exact reading agrees.
+    double total = 0.0;
+    for (double c : inst.costs()) total += c;
+    claim = std::nextafter(claim - std::ldexp(total, -50), -INFINITY);
+  }
+  cert.bound_claim = exact_rational_text(claim);
   cert.cost_claim = exact_cost_text(inst, cover, cert.unicost);
   sol.gap = sol.cost > 0 ? (sol.cost - sol.lower_bound) / sol.cost : 0.0;
   sol.optimal = sol.lower_bound >= sol.cost;
+  sol.proven_optimal = sol.optimal || all_proven;
+  sol.stats.certificate_seconds = clock.seconds() - t_cert;
   sol.stats.seconds = clock.seconds();
   return sol;
 }

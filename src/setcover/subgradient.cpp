@@ -78,6 +78,38 @@ bool bound_closes_gap(const Instance& inst, double bound, double cost) {
   return bound >= cost - slack;
 }
 
+void coordinate_ascent(const Instance& inst, LagrangianState& state, std::int32_t sweeps,
+                       double deadline, const Stopwatch& clock) {
+  std::vector<double> u = state.u;
+  std::vector<double> reduced;
+  lagrangian_bound(inst, u, &reduced);
+  std::vector<std::int32_t> order(static_cast<std::size_t>(inst.num_rows()));
+  for (std::int32_t i = 0; i < inst.num_rows(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) {
+    return inst.row(a).size() < inst.row(b).size();
+  });
+  for (std::int32_t sweep = 0; sweep < sweeps; ++sweep) {
+    if (clock.seconds() > deadline) break;
+    for (std::int32_t i : order) {
+      double m1 = std::numeric_limits<double>::infinity();
+      for (std::int32_t j : inst.row(i)) m1 = std::min(m1, reduced[j] + u[i]);
+      const double next = std::max(0.0, m1);
+      const double delta = next - u[i];
+      if (delta == 0.0) continue;
+      for (std::int32_t j : inst.row(i)) reduced[j] -= delta;
+      u[i] = next;
+    }
+    // Recompute from scratch: the incremental reduced costs drift by rounding.
+    const double value = lagrangian_bound(inst, u, &reduced);
+    if (value > state.bound) {
+      state.bound = value;
+      state.u = u;
+    } else {
+      break;
+    }
+  }
+}
+
 void subgradient(const Instance& inst, LagrangianState& state, const SubgradientOptions& options,
                  const Stopwatch& clock) {
   const std::size_t m = static_cast<std::size_t>(inst.num_rows());
@@ -95,7 +127,7 @@ void subgradient(const Instance& inst, LagrangianState& state, const Subgradient
       state.u = u;
     }
     if (use_core) {
-      core = build_core(inst, reduced, state.cover, 0.1 * min_cost);
+      core = build_core(inst, reduced, state.cover, 0.0);
       core_mask.assign(static_cast<std::size_t>(inst.num_cols()), 0);
       for (std::int32_t j : core) core_mask[j] = 1;
     }

@@ -41,6 +41,14 @@ std::vector<double> initial_multipliers(const Instance& inst);
 /// True when `bound` proves `cost` optimal (integer costs: ⌈bound⌉ >= cost).
 bool bound_closes_gap(const Instance& inst, double bound, double cost);
 
+/// Block-free coordinate ascent on L: for each row i in turn (fewest columns first), L as a
+/// function of u_i alone is concave piecewise linear with slope 1 − #{j ∋ i : a_j < u_i},
+/// a_j = c_j − Σ_{k∈S_j, k≠i} u_k, so it is maximal for u_i between the two smallest a_j;
+/// u_i takes the smallest (keeping row i's columns at reduced cost ≥ 0). L never decreases.
+/// One sweep costs O(entries). Updates state.u / state.bound if the bound improves.
+void coordinate_ascent(const Instance& inst, LagrangianState& state, std::int32_t sweeps,
+                       double deadline, const Stopwatch& clock);
+
 /// Runs subgradient optimisation from state.u, updating state in place.
 /// \pre state.cover is a cover of inst with cost state.cover_cost.
 void subgradient(const Instance& inst, LagrangianState& state, const SubgradientOptions& options,

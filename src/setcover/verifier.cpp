@@ -188,7 +188,12 @@ mpz_class ceil_of(const mpq_class& q) {
   return r;
 }
 
-Verdict check(const ExactInstance& inst, std::istream& certificate) {
+Verdict check(ExactInstance inst, std::istream& certificate) {
+  // A column is a set: a row listed twice counts once.
+  for (auto& col : inst.columns) {
+    std::sort(col.begin(), col.end());
+    col.erase(std::unique(col.begin(), col.end()), col.end());
+  }
   Verdict v;
   ParsedCertificate c;
   if (std::string err = parse_certificate(certificate, c); !err.empty()) {
@@ -233,7 +238,11 @@ Verdict check(const ExactInstance& inst, std::istream& certificate) {
   mpq_class bound = scaled / c.scale;
   bound.canonicalize();
   if (v.integer_costs) bound = mpq_class(ceil_of(bound));
-  if (c.cost_claim != cost) v.problems.push_back("claimed cost " + c.cost_claim.get_str() + " differs from the cover's cost " + cost.get_str());
+  // Non-integer costs: the claim may come from binary doubles of the decimal costs; it must
+  // agree within the stated margin 2^-40 · cost (integer costs: exactly).
+  mpq_class margin(0);
+  if (!v.integer_costs) margin = cost / mpq_class(mpz_class(1) << 40);
+  if (abs(c.cost_claim - cost) > margin) v.problems.push_back("claimed cost " + c.cost_claim.get_str() + " differs from the cover's cost " + cost.get_str());
   if (c.bound_claim > bound) v.problems.push_back("claimed bound " + c.bound_claim.get_str() + " exceeds the recomputed bound " + bound.get_str());
   v.cost = cost.get_str();
   v.bound = bound.get_str();
@@ -252,7 +261,7 @@ std::string Verdict::summary() const {
     out << "INVALID: " << (problems.empty() ? std::string("unknown") : problems.front());
     return out.str();
   }
-  out << "VALID cost " << cost << " bound " << bound << " gap " << gap;
+  out << "VALID cost " << cost << " bound " << bound << " gap " << 100.0 * gap << "%";
   return out.str();
 }
 
@@ -261,10 +270,10 @@ Verdict verify_certificate_files(const std::filesystem::path& instance,
                                  VerifierInputFormat format) {
   std::ifstream in(instance);
   if (!in) throw IoError("verifier: cannot open instance " + instance.string());
-  const ExactInstance inst = parse_instance(in, format, instance.string());
+  ExactInstance inst = parse_instance(in, format, instance.string());
   std::ifstream cert(certificate);
   if (!cert) throw IoError("verifier: cannot open certificate " + certificate.string());
-  return check(inst, cert);
+  return check(std::move(inst), cert);
 }
 
 Verdict verify_certificate(std::int64_t num_rows, const std::vector<std::vector<std::int32_t>>& columns,
@@ -285,7 +294,7 @@ Verdict verify_certificate(std::int64_t num_rows, const std::vector<std::vector<
     }
   }
   if (!costs.empty() && costs.size() != columns.size()) throw InvalidInput("verifier: cost count differs from column count");
-  return check(inst, certificate);
+  return check(std::move(inst), certificate);
 }
 
 }  // namespace rstruct::setcover

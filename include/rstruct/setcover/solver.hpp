@@ -42,6 +42,12 @@ struct SolverStats {
   std::int64_t components = 0;
   std::int64_t subgradient_iterations = 0;
   std::int64_t local_search_iterations = 0;
+  std::int64_t exact_nodes = 0;  ///< branch-and-bound nodes over all components
+  double reduction_seconds = 0.0;
+  double greedy_seconds = 0.0;
+  double subgradient_seconds = 0.0;
+  double local_search_seconds = 0.0;
+  double certificate_seconds = 0.0;
 };
 
 struct Solution {
@@ -54,6 +60,9 @@ struct Solution {
   double gap = 0.0;
   /// True when lower_bound == cost: the cover is proven optimal by the certificate.
   bool optimal = false;
+  /// True when no cheaper cover exists: `optimal`, or a proof the certificate cannot carry
+  /// (reduced-cost fixing left some row without a column, or the exact search finished).
+  bool proven_optimal = false;
   Certificate certificate;
   SolverStats stats;
 };

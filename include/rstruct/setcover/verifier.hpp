@@ -7,7 +7,9 @@
 /// over every column in exact rational arithmetic (GMP), costs read exactly from their
 /// decimal text. The bound is rounded up to an integer only when every cost is an integer.
 /// Validity: the cover covers every row with valid, distinct column indices; every U_i is a
-/// non-negative integer; the claimed cost equals the cover's cost; the claimed bound does
+/// non-negative integer; the claimed cost equals the cover's cost (within 2⁻⁴⁰ of it
+/// relative when costs are not all integers: claims may come from binary doubles of decimal
+/// costs); the claimed bound does
 /// not exceed the recomputed one. Any u ≥ 0 gives a valid bound (weak Lagrangian duality).
 
 #include <cstdint>

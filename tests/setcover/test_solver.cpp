@@ -1,0 +1,114 @@
+#include "rstruct/setcover/solver.hpp"
+
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+#include <sstream>
+
+#include "rstruct/core/error.hpp"
+#include "rstruct/setcover/verifier.hpp"
+#include "small_instances.hpp"
+
+using namespace rstruct::setcover;
+using rstruct::setcover::testing::brute_force_optimum;
+using rstruct::setcover::testing::gen_small_instance;
+using rstruct::setcover::testing::SmallInstance;
+
+namespace {
+
+SolverOptions small_options(std::uint64_t seed = 1) {
+  SolverOptions o;
+  o.time_limit = 30.0;  // a safety net: the work limits end the search first
+  o.seed = seed;
+  o.max_local_search_iterations = 20'000;
+  return o;
+}
+
+Verdict verify(const SmallInstance& s, const Certificate& cert) {
+  std::istringstream in(certificate_text(cert));
+  return verify_certificate(s.rows, s.columns, s.costs, in);
+}
+
+}  // namespace
+
+TEST_CASE("small instances: optimal cost, bound <= optimum, certificate valid") {
+  rc::prop("solver matches brute force", [] {
+    const SmallInstance s = *gen_small_instance();
+    const Instance inst = s.build();
+    const double opt = brute_force_optimum(inst);
+    for (bool domination : {true, false}) {
+      SolverOptions o = small_options();
+      o.use_domination = domination;
+      const Solution sol = solve(inst, o);
+      RC_ASSERT(inst.is_cover(sol.columns));
+      RC_ASSERT(sol.cost == opt);
+      RC_ASSERT(sol.lower_bound <= opt);
+      RC_ASSERT(sol.proven_optimal);
+      RC_ASSERT(sol.optimal == (sol.lower_bound == sol.cost));
+      const Verdict v = verify(s, sol.certificate);
+      RC_LOG() << v.summary() << "\n" << certificate_text(sol.certificate);
+      RC_ASSERT(v.valid);
+      RC_ASSERT(v.bound_value == sol.lower_bound);
+      RC_ASSERT(v.cost_value == sol.cost);
+    }
+  });
+}
+
+TEST_CASE("the result does not depend on the order of the columns (metamorphic)") {
+  rc::prop("reversed columns give the same optimal cost", [] {
+    SmallInstance s = *gen_small_instance();
+    const double a = solve(s.build(), small_options()).cost;
+    std::reverse(s.columns.begin(), s.columns.end());
+    std::reverse(s.costs.begin(), s.costs.end());
+    RC_ASSERT(solve(s.build(), small_options()).cost == a);
+  });
+}
+
+TEST_CASE("an uncoverable row is a clear error") {
+  const Instance inst = Instance::from_columns(3, {{0}, {2}});
+  CHECK_THROWS_AS(solve(inst), rstruct::ComputationFailed);
+  CHECK_THROWS_WITH(solve(inst), Catch::Contains("row 1"));
+}
+
+TEST_CASE("trivial instances") {
+  const Instance empty = Instance::from_columns(0, {});
+  const Solution e = solve(empty);
+  CHECK(e.cost == 0.0);
+  CHECK(e.optimal);
+  const Instance zero = Instance::from_columns(2, {{0, 1}, {0}}, {0.0, 1.0});
+  const Solution z = solve(zero);
+  CHECK(z.cost == 0.0);
+  CHECK(z.columns == std::vector<std::int32_t>{0});
+}
+
+TEST_CASE("non-integer costs: exact certificate, no ceiling") {
+  SmallInstance s;
+  s.rows = 3;
+  s.columns = {{0, 1}, {1, 2}, {0, 2}, {0}, {1}, {2}};
+  s.costs = {0.7, 0.7, 0.7, 0.3, 0.3, 0.3};
+  const Instance inst = s.build();
+  const Solution sol = solve(inst, small_options());
+  CHECK(sol.cost == Approx(0.9));
+  // LP optimum is 0.9 as well (u = 0.3 each), so the bound is close but never above the cost.
+  CHECK(sol.lower_bound <= sol.cost);
+  CHECK(sol.lower_bound > 0.89);
+  const Verdict v = verify(s, sol.certificate);
+  CHECK(v.valid);
+  CHECK_FALSE(v.integer_costs);
+}
+
+TEST_CASE("geometric-style instance: cover, bound and certificate") {
+  // Points on a circle, each column covers its point and 3 neighbours on each side.
+  const std::int32_t n = 3000;
+  std::vector<std::vector<std::int32_t>> cols(n);
+  for (std::int32_t j = 0; j < n; ++j) {
+    for (std::int32_t d = -3; d <= 3; ++d) cols[j].push_back((j + d + n) % n);
+  }
+  const Instance inst = Instance::from_columns(n, cols);
+  const Solution sol = solve(inst, small_options());
+  CHECK(inst.is_cover(sol.columns));
+  CHECK(sol.cost == 429);  // ⌈3000 / 7⌉
+  CHECK(sol.lower_bound <= 429);
+  CHECK(sol.lower_bound >= 420);  // LP optimum 3000/7 = 428.57…
+  std::istringstream in(certificate_text(sol.certificate));
+  CHECK(verify_certificate(n, cols, {}, in).valid);
+}
