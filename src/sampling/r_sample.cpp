@@ -1,6 +1,7 @@
 #include "rstruct/sampling/r_sample.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <sstream>
 #include <unordered_map>
@@ -161,21 +162,23 @@ std::vector<Point3> thin(std::vector<Violation> v, double half_gap) {
   double lmin = HUGE_VAL;
   for (const Violation& x : v) lmin = std::min(lmin, x.lfs);
   const double h = half_gap * lmin;
-  auto key = [h](long long i, long long j, long long k) {
-    return (i * 73856093LL) ^ (j * 19349663LL) ^ (k * 83492791LL);
+  // Cell coordinates wrap modulo 2⁶⁴ (unsigned arithmetic): collisions only cost time.
+  auto cell_of = [h](double c) {
+    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(c / h)));
   };
-  std::unordered_multimap<long long, Point3> grid;
+  auto key = [](std::uint64_t i, std::uint64_t j, std::uint64_t k) {
+    return (i * 73856093ull) ^ (j * 19349663ull) ^ (k * 83492791ull);
+  };
+  std::unordered_multimap<std::uint64_t, Point3> grid;
   std::vector<Point3> kept;
   for (const Violation& x : v) {
     const double radius = half_gap * x.lfs;
-    const long long span = static_cast<long long>(std::ceil(radius / h));
-    const long long ci = std::llround(std::floor(x.point.x / h));
-    const long long cj = std::llround(std::floor(x.point.y / h));
-    const long long ck = std::llround(std::floor(x.point.z / h));
+    const auto span = static_cast<std::uint64_t>(std::ceil(radius / h));
+    const std::uint64_t ci = cell_of(x.point.x), cj = cell_of(x.point.y), ck = cell_of(x.point.z);
     bool free = true;
-    for (long long i = ci - span; i <= ci + span && free; ++i) {
-      for (long long j = cj - span; j <= cj + span && free; ++j) {
-        for (long long k = ck - span; k <= ck + span && free; ++k) {
+    for (std::uint64_t i = ci - span; i != ci + span + 1 && free; ++i) {
+      for (std::uint64_t j = cj - span; j != cj + span + 1 && free; ++j) {
+        for (std::uint64_t k = ck - span; k != ck + span + 1 && free; ++k) {
           const auto range = grid.equal_range(key(i, j, k));
           for (auto it = range.first; it != range.second && free; ++it) {
             if (distance(it->second, x.point) < radius) free = false;

@@ -131,3 +131,16 @@ TEST_CASE("generation is deterministic and inputs are validated") {
   CHECK_THROWS_AS(generate_r_sample(t, 0.08, bad), InvalidInput);
   CHECK_THROWS_AS(certify_r_sample(t, {{NAN, 0, 0}}, 0.08), InvalidInput);
 }
+
+TEST_CASE("metamorphic: scaling by a power of two scales the sample and keeps the certificate") {
+  // Sphere(2) points are exactly twice Sphere(1) points (multiplication by 2 is exact),
+  // lfs doubles, so every ratio and hence the whole certificate is unchanged.
+  RSampleOptions options;
+  options.seed = 17;
+  const RSample a = generate_r_sample(Sphere(1.0), 0.1, options);
+  const RSample b = generate_r_sample(Sphere(2.0), 0.1, options);
+  REQUIRE(a.points.size() == b.points.size());
+  for (std::size_t i = 0; i < a.points.size(); ++i) REQUIRE(b.points[i] == a.points[i] * 2.0);
+  CHECK(a.certificate.upper_bound == Approx(b.certificate.upper_bound).epsilon(1e-12));
+  CHECK(a.certificate.grid_max == Approx(b.certificate.grid_max).epsilon(1e-12));
+}
