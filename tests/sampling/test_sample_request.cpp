@@ -52,6 +52,12 @@ TEST_CASE("r request: certified sample with lfs, moved and noisy") {
   for (const Point3& p : out.points) REQUIRE(std::fabs(distance(p, {10, 20, 30}) - 1.0) <= 1e-12);
   // Same request, same output; noise moves points by about sigma·lfs.
   CHECK(generate_sample(request).points == out.points);
+  const auto summary = sample_output_json(out);
+  CHECK(summary["points"] == out.points.size());
+  CHECK(summary["certificate"]["certified"] == true);
+  CHECK(summary["requested_r"] == 0.1);
+  CHECK(summary["lfs_min"].get<double>() == Approx(1.0));
+  CHECK(summary["translation"][2] == 30.0);
   request.noise = 0.01;
   request.noise_scale = NoiseScale::kLfs;
   const SampleOutput noisy = generate_sample(request);
