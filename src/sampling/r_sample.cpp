@@ -126,31 +126,46 @@ Certificate run_pass(const Surface& surface, const std::vector<Point3>& samples,
   return cert;
 }
 
-/// One uniformly placed point (in parameters) per cell of radius ≤ target·lfs.
-std::vector<Point3> jittered_sample(const Surface& surface, double target,
-                                    const RSampleOptions& options) {
-  Random random(derive_seed(options.seed, 7));
-  std::vector<Point3> points;
-  std::vector<StackCell> stack =
-      initial_cells(surface, options.certify.initial_cells_per_side);
+[[noreturn]] void too_many_points(std::size_t limit) {
+  std::ostringstream msg;
+  msg << "r-sample: more than " << limit << " points would be needed; choose a larger r";
+  throw InvalidInput(msg.str());
+}
+
+/// Visits the leaves of the subdivision into cells of radius ≤ target·lfs (centre lfs),
+/// calling leaf(cell) for each; stops with InvalidInput after `limit` leaves.
+template <typename Leaf>
+void for_each_leaf(const Surface& surface, double target, const RSampleOptions& options,
+                   std::size_t limit, Leaf leaf) {
+  std::size_t leaves = 0;
+  std::vector<StackCell> stack = initial_cells(surface, options.certify.initial_cells_per_side);
   while (!stack.empty()) {
     const StackCell c = stack.back();
     stack.pop_back();
     const CellReach reach = surface.cell_reach(c.cell);
     const Point3 g = surface.point(c.cell.chart, c.cell.u_mid(), c.cell.v_mid());
     if (reach.radius() <= target * surface.lfs(g) || c.depth >= options.certify.max_depth) {
-      points.push_back(surface.point(c.cell.chart, random.uniform(c.cell.u0, c.cell.u1),
-                                     random.uniform(c.cell.v0, c.cell.v1)));
-      if (points.size() > options.max_points) {
-        std::ostringstream msg;
-        msg << "r-sample: more than " << options.max_points
-            << " points would be needed; choose a larger r";
-        throw InvalidInput(msg.str());
-      }
+      if (++leaves > limit) too_many_points(options.max_points);
+      leaf(c.cell);
       continue;
     }
     split(c, reach, stack);
   }
+}
+
+/// One uniformly placed point (in parameters) per cell of radius ≤ target·lfs. A cheap
+/// pass with cells four times larger first predicts the count (leaves scale like
+/// 1/target², so ×16), so that hopeless requests fail fast rather than after building
+/// max_points points.
+std::vector<Point3> jittered_sample(const Surface& surface, double target,
+                                    const RSampleOptions& options) {
+  for_each_leaf(surface, 4.0 * target, options, options.max_points / 8, [](const ParamCell&) {});
+  Random random(derive_seed(options.seed, 7));
+  std::vector<Point3> points;
+  for_each_leaf(surface, target, options, options.max_points, [&](const ParamCell& cell) {
+    points.push_back(surface.point(cell.chart, random.uniform(cell.u0, cell.u1),
+                                   random.uniform(cell.v0, cell.v1)));
+  });
   return points;
 }
 
