@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <numeric>
 #include <sstream>
-#include <unordered_map>
 #include <vector>
 
 #include "rstruct/core/assert.hpp"
@@ -41,9 +40,6 @@ struct Grid {
   Point3 origin;
   double step = 0;
   std::int64_t nx = 0, ny = 0, nz = 0;
-  std::int64_t index(std::int64_t i, std::int64_t j, std::int64_t k) const {
-    return i + nx * (j + ny * k);
-  }
   Point3 node(std::int64_t i, std::int64_t j, std::int64_t k) const {
     return {origin.x + step * static_cast<double>(i), origin.y + step * static_cast<double>(j),
             origin.z + step * static_cast<double>(k)};
@@ -54,7 +50,7 @@ struct Grid {
 class Mesher {
  public:
   Mesher(const Surface& surface, const Grid& grid) : surface_(surface), grid_(grid) {
-    edges_.reserve(1 << 16);
+    for (auto& ids : edge_ids_) ids.assign(static_cast<std::size_t>(7 * grid_.nx * grid_.ny), kNone);
   }
 
   TriangleMesh run() {
@@ -65,6 +61,9 @@ class Mesher {
         for (std::int64_t i = 0; i + 1 < grid_.nx; ++i) cube(i, j, k, below, above);
       }
       below.swap(above);
+      // Edges whose lower end is in layer k + 1 become the lower layer's.
+      edge_ids_[0].swap(edge_ids_[1]);
+      std::fill(edge_ids_[1].begin(), edge_ids_[1].end(), kNone);
     }
     return std::move(mesh_);
   }
@@ -166,38 +165,38 @@ class Mesher {
     mesh_.faces.push_back(tri);
   }
 
+  /// The vertex on the grid edge between tet vertices a and b, created on first use.
+  /// Edges of the Kuhn triangulation join a corner p to a corner q ≥ p componentwise, so
+  /// an edge is identified by its lower end and the direction q − p ∈ {0, 1}³ \ {0}; ids
+  /// are kept for the two node layers of the current cube layer.
   std::uint32_t edge_vertex(std::int64_t i, std::int64_t j, std::int64_t k,
                             const std::array<Corner, 4>& tet, const std::array<double, 8>& v,
                             int a, int b) {
-    const Corner& p = tet[static_cast<std::size_t>(a)];
-    const Corner& q = tet[static_cast<std::size_t>(b)];
-    std::int64_t ia = grid_.index(i + p[0], j + p[1], k + p[2]);
-    std::int64_t ib = grid_.index(i + q[0], j + q[1], k + q[2]);
-    double fa = v[static_cast<std::size_t>(p[0] + 2 * p[1] + 4 * p[2])];
-    double fb = v[static_cast<std::size_t>(q[0] + 2 * q[1] + 4 * q[2])];
-    if (ia > ib) {
-      std::swap(ia, ib);
-      std::swap(fa, fb);
-    }
-    const std::uint64_t key = static_cast<std::uint64_t>(ia) * 0x100000000ull +
-                              static_cast<std::uint64_t>(ib - ia);
-    const auto [it, inserted] =
-        edges_.try_emplace(key, static_cast<std::uint32_t>(mesh_.vertices.size()));
-    if (inserted) {
-      const Point3 pa = grid_.node(ia % grid_.nx, (ia / grid_.nx) % grid_.ny,
-                                   ia / (grid_.nx * grid_.ny));
-      const Point3 pb = grid_.node(ib % grid_.nx, (ib / grid_.nx) % grid_.ny,
-                                   ib / (grid_.nx * grid_.ny));
-      const double t = fa / (fa - fb);  // fa and fb have opposite signs (or fb = 0)
+    const Corner* p = &tet[static_cast<std::size_t>(a)];
+    const Corner* q = &tet[static_cast<std::size_t>(b)];
+    if ((*p)[0] + (*p)[1] + (*p)[2] > (*q)[0] + (*q)[1] + (*q)[2]) std::swap(p, q);
+    const int direction = ((*q)[0] - (*p)[0]) + 2 * ((*q)[1] - (*p)[1]) + 4 * ((*q)[2] - (*p)[2]);
+    RSTRUCT_ASSERT(direction >= 1 && direction <= 7);
+    const auto slot = static_cast<std::size_t>(
+        7 * ((i + (*p)[0]) + grid_.nx * (j + (*p)[1])) + (direction - 1));
+    std::uint32_t& id = edge_ids_[static_cast<std::size_t>((*p)[2])][slot];
+    if (id == kNone) {
+      id = static_cast<std::uint32_t>(mesh_.vertices.size());
+      const double fa = v[static_cast<std::size_t>((*p)[0] + 2 * (*p)[1] + 4 * (*p)[2])];
+      const double fb = v[static_cast<std::size_t>((*q)[0] + 2 * (*q)[1] + 4 * (*q)[2])];
+      const Point3 pa = grid_.node(i + (*p)[0], j + (*p)[1], k + (*p)[2]);
+      const Point3 pb = grid_.node(i + (*q)[0], j + (*q)[1], k + (*q)[2]);
+      const double t = fa / (fa - fb);  // fa and fb have opposite signs (or one is 0)
       mesh_.vertices.push_back(pa + (pb - pa) * t);
     }
-    return it->second;
+    return id;
   }
 
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
   const Surface& surface_;
   Grid grid_;
   TriangleMesh mesh_;
-  std::unordered_map<std::uint64_t, std::uint32_t> edges_;
+  std::array<std::vector<std::uint32_t>, 2> edge_ids_;
 };
 
 }  // namespace

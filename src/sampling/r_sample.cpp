@@ -1,6 +1,7 @@
 #include "rstruct/sampling/r_sample.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <sstream>
 #include <unordered_map>
@@ -125,31 +126,46 @@ Certificate run_pass(const Surface& surface, const std::vector<Point3>& samples,
   return cert;
 }
 
-/// One uniformly placed point (in parameters) per cell of radius ≤ target·lfs.
-std::vector<Point3> jittered_sample(const Surface& surface, double target,
-                                    const RSampleOptions& options) {
-  Random random(derive_seed(options.seed, 7));
-  std::vector<Point3> points;
-  std::vector<StackCell> stack =
-      initial_cells(surface, options.certify.initial_cells_per_side);
+[[noreturn]] void too_many_points(std::size_t limit) {
+  std::ostringstream msg;
+  msg << "r-sample: more than " << limit << " points would be needed; choose a larger r";
+  throw InvalidInput(msg.str());
+}
+
+/// Visits the leaves of the subdivision into cells of radius ≤ target·lfs (centre lfs),
+/// calling leaf(cell) for each; stops with InvalidInput after `limit` leaves.
+template <typename Leaf>
+void for_each_leaf(const Surface& surface, double target, const RSampleOptions& options,
+                   std::size_t limit, Leaf leaf) {
+  std::size_t leaves = 0;
+  std::vector<StackCell> stack = initial_cells(surface, options.certify.initial_cells_per_side);
   while (!stack.empty()) {
     const StackCell c = stack.back();
     stack.pop_back();
     const CellReach reach = surface.cell_reach(c.cell);
     const Point3 g = surface.point(c.cell.chart, c.cell.u_mid(), c.cell.v_mid());
     if (reach.radius() <= target * surface.lfs(g) || c.depth >= options.certify.max_depth) {
-      points.push_back(surface.point(c.cell.chart, random.uniform(c.cell.u0, c.cell.u1),
-                                     random.uniform(c.cell.v0, c.cell.v1)));
-      if (points.size() > options.max_points) {
-        std::ostringstream msg;
-        msg << "r-sample: more than " << options.max_points
-            << " points would be needed; choose a larger r";
-        throw InvalidInput(msg.str());
-      }
+      if (++leaves > limit) too_many_points(options.max_points);
+      leaf(c.cell);
       continue;
     }
     split(c, reach, stack);
   }
+}
+
+/// One uniformly placed point (in parameters) per cell of radius ≤ target·lfs. A cheap
+/// pass with cells four times larger first predicts the count (leaves scale like
+/// 1/target², so ×16), so that hopeless requests fail fast rather than after building
+/// max_points points.
+std::vector<Point3> jittered_sample(const Surface& surface, double target,
+                                    const RSampleOptions& options) {
+  for_each_leaf(surface, 4.0 * target, options, options.max_points / 8, [](const ParamCell&) {});
+  Random random(derive_seed(options.seed, 7));
+  std::vector<Point3> points;
+  for_each_leaf(surface, target, options, options.max_points, [&](const ParamCell& cell) {
+    points.push_back(surface.point(cell.chart, random.uniform(cell.u0, cell.u1),
+                                   random.uniform(cell.v0, cell.v1)));
+  });
   return points;
 }
 
@@ -161,21 +177,23 @@ std::vector<Point3> thin(std::vector<Violation> v, double half_gap) {
   double lmin = HUGE_VAL;
   for (const Violation& x : v) lmin = std::min(lmin, x.lfs);
   const double h = half_gap * lmin;
-  auto key = [h](long long i, long long j, long long k) {
-    return (i * 73856093LL) ^ (j * 19349663LL) ^ (k * 83492791LL);
+  // Cell coordinates wrap modulo 2⁶⁴ (unsigned arithmetic): collisions only cost time.
+  auto cell_of = [h](double c) {
+    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(c / h)));
   };
-  std::unordered_multimap<long long, Point3> grid;
+  auto key = [](std::uint64_t i, std::uint64_t j, std::uint64_t k) {
+    return (i * 73856093ull) ^ (j * 19349663ull) ^ (k * 83492791ull);
+  };
+  std::unordered_multimap<std::uint64_t, Point3> grid;
   std::vector<Point3> kept;
   for (const Violation& x : v) {
     const double radius = half_gap * x.lfs;
-    const long long span = static_cast<long long>(std::ceil(radius / h));
-    const long long ci = std::llround(std::floor(x.point.x / h));
-    const long long cj = std::llround(std::floor(x.point.y / h));
-    const long long ck = std::llround(std::floor(x.point.z / h));
+    const auto span = static_cast<std::uint64_t>(std::ceil(radius / h));
+    const std::uint64_t ci = cell_of(x.point.x), cj = cell_of(x.point.y), ck = cell_of(x.point.z);
     bool free = true;
-    for (long long i = ci - span; i <= ci + span && free; ++i) {
-      for (long long j = cj - span; j <= cj + span && free; ++j) {
-        for (long long k = ck - span; k <= ck + span && free; ++k) {
+    for (std::uint64_t i = ci - span; i != ci + span + 1 && free; ++i) {
+      for (std::uint64_t j = cj - span; j != cj + span + 1 && free; ++j) {
+        for (std::uint64_t k = ck - span; k != ck + span + 1 && free; ++k) {
           const auto range = grid.equal_range(key(i, j, k));
           for (auto it = range.first; it != range.second && free; ++it) {
             if (distance(it->second, x.point) < radius) free = false;

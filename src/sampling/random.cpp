@@ -2,9 +2,12 @@
 
 #include <cmath>
 
+#include "rstruct/core/assert.hpp"
+
 namespace rstruct::sampling {
 
 std::uint64_t Random::below(std::uint64_t n) {
+  RSTRUCT_ASSERT_MSG(n > 0, "Random::below(0)");
   // Accept only draws below the largest multiple of n, so every residue is equally likely.
   const std::uint64_t limit = n * (UINT64_MAX / n);
   for (;;) {

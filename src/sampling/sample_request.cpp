@@ -201,4 +201,34 @@ nlohmann::json certificate_json(const Certificate& c) {
   return j;
 }
 
+nlohmann::json sample_output_json(const SampleOutput& out) {
+  nlohmann::json j;
+  if (out.surface) {
+    j["surface"] = out.surface->name();
+    j["medial_axis"] = out.surface->medial_axis_description();
+  } else {
+    j["surface"] = "triangle mesh";
+  }
+  j["points"] = out.points.size();
+  if (!out.lfs.empty()) {
+    const auto [lo, hi] = std::minmax_element(out.lfs.begin(), out.lfs.end());
+    j["lfs_min"] = *lo;
+    j["lfs_max"] = *hi;
+  }
+  j["rotation"] = out.transform.q;
+  j["translation"] = {out.transform.t.x, out.transform.t.y, out.transform.t.z};
+  if (out.r_sample) {
+    const RSample& r = *out.r_sample;
+    j["requested_r"] = r.requested_r;
+    j["initial_points"] = r.initial_points;
+    j["added_points"] = r.added_points;
+    j["rounds"] = r.rounds;
+    j["generation_seconds"] = r.generation_seconds;
+    j["certification_seconds"] = r.certification_seconds;
+    j["certificate"] = certificate_json(r.certificate);
+  }
+  j["seconds"] = out.seconds;
+  return j;
+}
+
 }  // namespace rstruct::sampling

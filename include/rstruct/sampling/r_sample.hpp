@@ -79,8 +79,9 @@ struct RSampleOptions {
   /// Initial jittered sample: one point per cell of radius ≤ spacing · r_fill · lfs.
   double spacing = 1.4;
   int max_rounds = 100;
-  /// Refuse (InvalidInput) when the initial sample alone would exceed this many points.
-  std::size_t max_points = 20000000;
+  /// Refuse (InvalidInput) when the initial sample alone would exceed this many points
+  /// (predicted from a coarse pass first: requests needing over ~2× this fail fast).
+  std::size_t max_points = 5000000;
   /// Re-certify at thresholds just above grid_max to report a tighter upper bound.
   bool tighten = true;
   CertifyOptions certify;

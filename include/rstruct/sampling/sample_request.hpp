@@ -78,4 +78,8 @@ SampleOutput generate_sample(const SampleRequest& request);
 /// The certificate as JSON (for --report).
 nlohmann::json certificate_json(const Certificate& certificate);
 
+/// A summary of a run for --report: surface name and medial axis, point count, lfs range,
+/// transform, and for r-samples the generation counts, seconds and certificate.
+nlohmann::json sample_output_json(const SampleOutput& output);
+
 }  // namespace rstruct::sampling
