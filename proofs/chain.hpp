@@ -93,3 +93,72 @@ inline BnbResult a2_max_cos(const Interval& d_max, const Interval& factor,
 }
 
 }  // namespace rstruct::proofs
+
+namespace rstruct::proofs {
+
+/// Lemma 5.6 for a general rho (the paper proves rho = 0.3 only). Fibre v -> m, |m - v| = 1,
+/// a surface ball B_s (radius rho D^(s)) entering the fibre at x, xi = |x - v|.
+///  (2)  s outside B(m, 1), above x:  |s - x|^2 >= 1 - (1 - xi)^2 and |s-x|/|s-m| >=
+///       sqrt(2 xi - xi^2) (minimum at the corner s_0, checked by B&B in lemma_5_6.cpp);
+///       with |s - m| >= lfs~(s) >= c55 D^(s) >= (c55/rho) |s - x| this forces
+///       xi <= k1(rho) = 1 - sqrt(1 - (rho/c55)^2).
+///  (3)  |s - x| / |x - v| >= sqrt(2/k1 - 1) = (1 + sqrt(1 - sigma^2)) / sigma, sigma = rho/c55.
+///  (6)  D^(t) >= A |x - v| - |v - t|,  A = ratio3 (1/rho - 1) - 1.
+///  (7)  D^(t) >= B |v - t|,  B = 1 / (c5 c51)  (|v - t| <= c5 lfs(t), lfs <= c51 D^).
+///  (8)  |x - v| + |v - t| <= K D^(t) with the best multipliers: K = (1 + 1/B)/A + 1/B
+///       (the maximum of X + Y subject to A X - Y <= 1, B Y <= 1 -- exact for this chain).
+///  (4)  holds iff rho >= K(rho).
+struct Chain56 {
+  Interval c55;  ///< Corollary 5.5: lfs~(s) >= c55 D^(s)          (paper: 0.817)
+  Interval c5;   ///< (5): |v - t| <= c5 lfs(t)                      (paper: 0.123)
+  Interval c51;  ///< Lemma 5.1: lfs(s) <= c51 D^(s)                 (paper: 1.2802)
+
+  Interval sigma(const Interval& rho) const { return rho / c55; }
+  Interval k1(const Interval& rho) const {
+    Interval s = sigma(rho);
+    return 1 - sqrt_nonneg(1 - s * s);
+  }
+  Interval ratio3(const Interval& rho) const {
+    Interval s = sigma(rho);
+    return (1 + sqrt_nonneg(1 - s * s)) / s;
+  }
+  Interval a6(const Interval& rho) const { return ratio3(rho) * (1 / rho - 1) - 1; }
+  Interval b7() const { return 1 / (c5 * c51); }
+  Interval k8(const Interval& rho) const {
+    Interval inv_b = c5 * c51;
+    return (1 + inv_b) / a6(rho) + inv_b;
+  }
+  /// rho - K(rho): (4) holds iff > 0 (requires rho < c55 and A > 0).
+  Interval slack4(const Interval& rho) const { return rho - k8(rho); }
+  /// Theorem 6.1: with D^(t) <= (1 + rho~) D^(u), the pruned union keeps the fibre property
+  /// iff K (1 + rho~) <= rho - rho~, i.e. rho~ <= (rho - K)/(1 + K).
+  Interval rho_tilde_max(const Interval& rho) const {
+    Interval k = k8(rho);
+    return (rho - k) / (1 + k);
+  }
+};
+
+/// A zero of f in [a, b] where f(a), f(b) have opposite signs, by bisection on midpoints (a
+/// locator only: the interval it suggests is then certified by B&B).
+inline double bisect_root(const std::function<Interval(const Interval&)>& f, double a,
+                          double b) {
+  bool neg_a = mid_d(f(Interval(a))) < 0;
+  for (int i = 0; i < 60; ++i) {
+    double m = 0.5 * (a + b);
+    if ((mid_d(f(Interval(m))) < 0) == neg_a) {
+      a = m;
+    } else {
+      b = m;
+    }
+  }
+  return 0.5 * (a + b);
+}
+
+/// B&B of min over rho in [lo, hi] of f(rho); `f` must be defined on the whole interval.
+inline BnbResult min_over_rho(const std::function<Interval(const Interval&)>& f, double lo,
+                              double hi) {
+  Objective g = [&f](const Box& b) { return Eval{f(b[0]), Feasible::kAll}; };
+  return minimize(g, {hull(lo, hi)}, 1e-9, 100000);
+}
+
+}  // namespace rstruct::proofs
