@@ -162,3 +162,60 @@ inline BnbResult min_over_rho(const std::function<Interval(const Interval&)>& f,
 }
 
 }  // namespace rstruct::proofs
+
+namespace rstruct::proofs {
+
+/// Lemma A.3 (= 5.4), edge case, our proof (the paper's "the angles are minimised when v lies
+/// on the intersection" is not true for all v outside the balls; the bound still holds).
+/// Normalise |p - q| = 1, p = (0,0), q = (1,0), v above the axis and nearer to p. If the foot
+/// of v on pq is interior, |m - v| / min(|v-p|, |v-q|) >= sin(angle vpq), so a ratio < kappa
+/// puts v in the triangle W' = {0 <= x <= 1/2, 0 <= y <= x tan(tau)}, tau = asin(kappa),
+/// whose farthest point from p and q is its apex at distance T = 1/(2 cos tau). Balls of
+/// radii a0, b0 meeting at angle <= psi (a0^2 + b0^2 - 1 - 2 a0 b0 cos(psi) >= 0, the
+/// "admissible" pairs) cover W':
+///  (i)  max(a0, b0) > T: then if a0 >= b0, B_p covers W' (every point within T of p);
+///  (ii) if a0 < b0 <= ... : B_q covers the apex (b0 > T); the upper boundary of the union
+///       crosses the line y = x tan(tau) only if the circles' intersection point v0 lies
+///       below it; v0 lies above iff 1 + a0^2 - b0^2 < 2 a0 cos(tau), implied (admissibility)
+///       by g = cos(tau) - a0 + b0 cos(psi) > 0 for a0 < b0, a0 <= T. On the B_q arc the
+///       line is inside by convexity of (1-x)^2 + x^2 tan^2(tau) between x0 and 1/2.
+/// So v outside both balls has ratio >= kappa whenever (i) and (ii) hold, checked below by
+/// B&B for given psi, kappa.
+struct EdgeCheck {
+  BnbResult corner;  ///< max over [0,T]^2 of a0^2 + b0^2 - 1 - 2 a0 b0 cos(psi): < 0 => (i)
+  BnbResult g;       ///< min of g over admissible a0 < b0, a0 <= T: > 0 => (ii)
+};
+inline EdgeCheck a3_edge(const Interval& psi, const Interval& kappa) {
+  Interval tau = asin_u(kappa);
+  Interval t_apex = 1 / (2 * cos(tau));
+  Interval cpsi = cos(psi);
+  EdgeCheck out;
+  Objective h = [&](const Box& b) {
+    return Eval{b[0] * b[0] + b[1] * b[1] - 1 - 2 * b[0] * b[1] * cpsi, Feasible::kAll};
+  };
+  Box sq{Interval(Real(0), hi(t_apex)), Interval(Real(0), hi(t_apex))};
+  out.corner = maximize(h, sq, 1e-9, 100000);
+  Interval ctau = cos(tau);
+  Objective g = [&](const Box& b) {
+    const Interval& a0 = b[0];
+    const Interval& b0 = b[1];
+    Interval adm = a0 * a0 + b0 * b0 - 1 - 2 * a0 * b0 * cpsi;
+    Interval order = b0 - a0;
+    Interval sum = a0 + b0 - 1;
+    Interval diff = 1 - (b0 - a0);
+    bool all = lo(adm) >= 0 && lo(order) >= 0 && lo(sum) >= 0 && lo(diff) >= 0;
+    bool none = hi(adm) < 0 || hi(order) < 0 || hi(sum) < 0 || hi(diff) < 0;
+    return Eval{ctau - a0 + b0 * cpsi,
+                all ? Feasible::kAll : none ? Feasible::kNone : Feasible::kSome};
+  };
+  Box region{Interval(Real(0), hi(t_apex)), Interval(Real(0), hi(t_apex) + 1)};
+  out.g = minimize(g, region, 1e-9, 200000);
+  return out;
+}
+
+/// Lemma A.3, triangle case, the paper's extreme configuration: regular pyramid with apex
+/// angles psi, height / edge = sqrt((1 + 2 cos psi) / 3). That this configuration is extreme
+/// is asserted, not proved, in the paper.
+inline Interval a3_triangle(const Interval& psi) { return sqrt_nonneg((1 + 2 * cos(psi)) / 3); }
+
+}  // namespace rstruct::proofs

@@ -3,7 +3,7 @@
 // Lemma 5.6's bound (8) (Chain56 in chain.hpp).
 //  (A) Corollary 5.5 = 0.8164 (E4): rho = 0.3, rho~ = 0.03 holds (the theorem survives);
 //      rho~ = 0.03 is valid exactly for rho in [0.2815, 0.3272]; the best rho~ is 0.0315.
-//  (B) Corollary 5.5 = 0.7553 (E3 too): no rho admits rho~ = 0.03; the best is 0.0236.
+//  (B) Corollary 5.5 = 0.7550 (E3 too): no rho admits rho~ = 0.03; the best is 0.0236.
 #include <cmath>
 
 #include "chain.hpp"
@@ -47,10 +47,10 @@ int main() {
   proof.note("(A) largest rho~ at rho = 0.24", a.rho_tilde_max(ratio(24, 100)));
   range(proof, "(A) c55 = 0.8164", a, rt);
   proof.note("(A) largest rho~ over rho in [0.2, 0.39] (B&B)", best_rho_tilde(a).extremum);
-  Chain56 b{ratio(7553, 10000), ratio(123, 1000), ratio(12802, 10000)};
+  Chain56 b{ratio(7550, 10000), ratio(123, 1000), ratio(12802, 10000)};
   // With E3's correction no rho admits rho~ = 0.03; the best is ~0.0236.
   BnbResult best = best_rho_tilde(b);
-  proof.less("(B) c55 = 0.7553: max over rho in [0.2, 0.39] of rho~_max < 0.03 (B&B)",
+  proof.less("(B) c55 = 0.7550: max over rho in [0.2, 0.39] of rho~_max < 0.03 (B&B)",
              best.extremum, rt);
   Interval rho_b = Interval(best.point.at(0));
   proof.greater_eq("(B) rho~ = 0.0236 valid at rho = " + std::to_string(best.point.at(0)),
