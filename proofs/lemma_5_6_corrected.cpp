@@ -4,6 +4,8 @@
 //      rho in [0.1907, 0.3979];
 //  (B) additionally Lemma A.2 with the radius bound the cited facts give (ERRATA E3:
 //      exterior angle >= 110.8 deg, Corollary 5.5 constant 0.7550): rho in [0.1960, 0.3725].
+//  (C) with Lemma 4.3 replaced by our certified elementary bounds (lemma_4_3_elementary.cpp):
+//      no rho is admissible -- the topological guarantee rests on the omitted proof.
 // Each interval is certified by B&B (rho - K(rho) > 0 on it), and shown to be tight to 1e-3
 // (K(rho) > rho just outside). Inputs still conditional on Lemma 4.3 (proof omitted).
 #include <cmath>
@@ -41,5 +43,19 @@ int main() {
   proof.note("(A) K(0.3)", a.k8(ratio(3, 10)));
   Chain56 b{ratio(7550, 10000), ratio(123, 1000), ratio(12802, 10000)};
   interval(proof, "(B) c55 = 0.7550", b);
+  // (C) only what is certified here: Lemma 4.3 replaced by lemma_4_3_elementary.cpp
+  // (c51 = 1.5126; case (b) of (5): 0.058 (1 + r) + r = 0.14264 > 0.123).
+  Chain56 c{ratio(8164, 10000), ratio(14265, 100000), ratio(15126, 10000)};
+  // A(rho) decreases in rho; beyond rho1 (A < 1/2) K >= 2 (1 + c5 c51) > 0.8 > rho, or
+  // A <= 0 and (6) gives nothing; below rho1 B&B.
+  double rho1 = std::ceil(bisect_root([&](const Interval& x) { return c.a6(x) - ratio(1, 2); },
+                                      0.3, 0.8) * 1e4) / 1e4;
+  proof.less("(C) A(rho1) < 1/2 at rho1 = " + std::to_string(rho1) + " (A decreasing)",
+             c.a6(Interval(rho1)), ratio(1, 2));
+  Objective f = [&](const Box& bx) { return Eval{c.slack4(bx[0]), Feasible::kAll}; };
+  BnbResult m = maximize(f, {hull(0.01, rho1)}, 1e-9, 100000);
+  proof.less("(C) c51 = 1.5126, c5 = 0.14265: max over rho in [0.01, rho1] of rho - K(rho) < 0"
+             " (no rho is admissible; rho < 0.01 fails since K >= c5 c51)",
+             m.extremum, Interval(0));
   return proof.finish();
 }
