@@ -128,9 +128,12 @@ using Objective = std::function<Eval(const Box&)>;
 /// feasible set is non-empty); `point` is the best feasible midpoint found. `witness`, if
 /// given, encloses f at a feasible point known to the caller (e.g. the paper's extreme
 /// configuration): it seeds the upper bound, so boxes that cannot beat it are pruned at once.
+/// `prove_above`: stop as soon as every remaining box has f > prove_above (the claim
+/// "min f > prove_above" is then proved; the enclosure's lower end is > prove_above).
 inline BnbResult minimize(const Objective& f, const Box& box, double tol, long max_boxes,
                           std::vector<double> scale = {},
-                          const Interval* witness = nullptr) {
+                          const Interval* witness = nullptr,
+                          double prove_above = std::numeric_limits<double>::infinity()) {
   if (scale.empty()) scale.assign(box.size(), 1.0);
   struct Node {
     double key;
@@ -169,6 +172,11 @@ inline BnbResult minimize(const Objective& f, const Box& box, double tol, long m
     Node n = queue.top();
     queue.pop();
     if (lo(n.value) > best_upper) continue;
+    if (n.key > prove_above) {  // n has the smallest key: every remaining box is above
+      lower = Real(n.key);
+      result.converged = true;
+      break;
+    }
     try_midpoint(n.box);
     if (best_upper - lo(n.value) <= tol || result.boxes >= max_boxes) {
       lower = Real(n.key);  // every queued box has key >= n.key: a global lower bound
@@ -190,7 +198,9 @@ inline BnbResult minimize(const Objective& f, const Box& box, double tol, long m
     push(std::move(right));
   }
   if (queue.empty() && lower == std::numeric_limits<double>::infinity()) {
-    lower = best_upper;  // every box pruned: the best point is optimal up to rounding
+    // Every box was infeasible or pruned: with a witness, the witness is optimal up to
+    // rounding; without one, the feasible set is empty (the enclosure is [+inf, +inf]).
+    lower = best_upper;
     result.converged = true;
   }
   if (best_upper == std::numeric_limits<double>::infinity()) best_upper = lower;

@@ -27,5 +27,8 @@ int main() {
   proof.note("B&B boxes " + std::to_string(m.boxes) + (m.converged ? " (converged)" : ""));
   proof.greater("min over d <= 0.0424, R_c >= 1, rho >= 1 - d (B&B): exterior > 120deg",
                 to_deg(a2_exterior_angle(m.extremum)), Interval(120));
+  BnbResult m5 = a2_max_cos(ratio(425, 10000), Interval(1), beta0);
+  proof.greater("same, d <= 0.0425 (Lemma A.1 corrected, ERRATA E2) (B&B): exterior > 120deg",
+                to_deg(a2_exterior_angle(m5.extremum)), Interval(120));
   return proof.finish();
 }
