@@ -1,0 +1,65 @@
+#pragma once
+/// \file
+/// Near-optimal set cover with a certified lower bound (paper §6; issue 6).
+///
+/// Pipeline: reduction (zero-cost and forced columns, dominated rows and columns,
+/// connected components) → greedy with lazy updates → Lagrangian subgradient optimisation
+/// on a core of columns with re-pricing and Lagrangian greedy heuristics (Caprara, Fischetti,
+/// Toth 1999) → reduced-cost fixing → row-weighting local search (Gao, Weise, Li 2015,
+/// extended to weighted costs). The lower bound is L(u) for the best multipliers found,
+/// evaluated exactly over every column of the original instance.
+
+#include <cstdint>
+#include <vector>
+
+#include "rstruct/setcover/certificate.hpp"
+#include "rstruct/setcover/instance.hpp"
+
+namespace rstruct::setcover {
+
+struct SolverOptions {
+  /// Wall-clock budget in seconds (anytime: the best cover so far is returned).
+  double time_limit = 10.0;
+  /// Seed of every random choice. With a fixed seed the result is deterministic as long as
+  /// the work limits below, not the time limit, end the search.
+  std::uint64_t seed = 1;
+  /// Local-search iterations over all components (0: no limit besides time).
+  std::int64_t max_local_search_iterations = 0;
+  /// Subgradient iterations per component.
+  std::int32_t max_subgradient_iterations = 10000;
+  /// Presolve with row and column domination (forced columns are always taken).
+  bool use_domination = true;
+};
+
+/// Counters for reports.
+struct SolverStats {
+  double seconds = 0.0;
+  double seconds_to_best = 0.0;  ///< when the returned cover was found
+  double greedy_cost = 0.0;      ///< Chvátal greedy on the reduced instance (+ fixed part)
+  std::int64_t forced_columns = 0;
+  std::int64_t dominated_rows = 0;
+  std::int64_t dominated_columns = 0;
+  std::int64_t components = 0;
+  std::int64_t subgradient_iterations = 0;
+  std::int64_t local_search_iterations = 0;
+};
+
+struct Solution {
+  std::vector<std::int32_t> columns;  ///< chosen columns, sorted, 0-based
+  double cost = 0.0;
+  /// Certified lower bound: the certificate's L(u), computed exactly over all columns and
+  /// rounded down (rounded up to an integer first when all costs are integers).
+  double lower_bound = 0.0;
+  /// (cost − lower_bound) / cost, 0 when cost is 0.
+  double gap = 0.0;
+  /// True when lower_bound == cost: the cover is proven optimal by the certificate.
+  bool optimal = false;
+  Certificate certificate;
+  SolverStats stats;
+};
+
+/// Solves `inst`. \throws ComputationFailed if some row is covered by no column (the
+/// message names the row, 0-based).
+Solution solve(const Instance& inst, const SolverOptions& options = {});
+
+}  // namespace rstruct::setcover

@@ -1,0 +1,337 @@
+#pragma once
+/// \file
+/// RegularTriangulation3: the regular (weighted Delaunay) triangulation of a set of weighted
+/// points in R³, and with all weights zero the Delaunay triangulation.
+///
+/// Papers implemented:
+///  - Bowyer (1981) / Watson (1981) incremental insertion: the cells whose orthosphere the new
+///    point is in conflict with form a star-shaped cavity that is re-triangulated from it.
+///  - Edelsbrunner & Shah, "Incremental topological flipping works for regular
+///    triangulations" (1996): regular triangulations, hidden (redundant) points.
+///  - Devillers & Teillaud, "Perturbations for Delaunay and weighted Delaunay 3D
+///    triangulations" (CGTA 2011): symbolic perturbation of the weights, so the
+///    triangulation is unique for any input, including cospherical and duplicate points.
+///  - Amenta, Choi & Rote, "Incremental constructions con BRIO" (2003): biased randomized
+///    insertion order, each round sorted along a Hilbert curve.
+///  - Devillers, Pion & Teillaud, "Walking in a triangulation" (2002): remembering
+///    stochastic walk for point location (terminates on degenerate input).
+///
+/// Structure: a triangulation of the 3-sphere. An *infinite vertex* (kInfiniteVertex) is
+/// joined to every convex-hull facet, so every cell has exactly four neighbours. Cells are
+/// 4 vertex ids + 4 neighbour links (32-bit ids) in one compact array; freed cells are
+/// recycled. Vertex ids are the indices of the input points, so an input point that is
+/// hidden or an exact duplicate simply has no incident cell.
+///
+/// Orientation: every finite cell (v0, v1, v2, v3) is positively oriented,
+/// predicates::orient3d(v0, v1, v2, v3) > 0. In an infinite cell, replacing the infinite
+/// vertex by a point beyond its (hull) facet gives a positively oriented tetrahedron.
+/// Facet i of a cell is the triangle opposite its vertex i.
+///
+/// Every combinatorial decision goes through rstruct/predicates (exact, perturbed). The
+/// constructions (circumcentre, orthocentre, radii) are plain double arithmetic: measurements
+/// for output and later stages, never used to decide anything here.
+///
+/// Thread-compatibility: after construction every const member function may be called
+/// concurrently from several threads (no mutable state, no caches).
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rstruct/geometry/vec3.hpp"
+
+namespace rstruct::triangulation {
+
+/// A vertex: the index of its input point.
+using VertexId = std::uint32_t;
+/// A cell (tetrahedron, possibly infinite).
+using CellId = std::uint32_t;
+
+/// The vertex at infinity closing the convex hull.
+inline constexpr VertexId kInfiniteVertex = 0xFFFFFFFFu;
+/// "No cell" (e.g. incident_cell() of a hidden point).
+inline constexpr CellId kNoCell = 0xFFFFFFFFu;
+/// Largest number of input points supported (ids kInfiniteVertex − 1 and above are reserved).
+inline constexpr std::size_t kMaxPoints = 0xFFFFFFF0u;
+
+/// A facet: the triangle of `cell` opposite its vertex `index` (0..3).
+struct Facet {
+  CellId cell = kNoCell;
+  int index = 0;
+  friend bool operator==(const Facet&, const Facet&) = default;
+};
+
+/// An edge: the segment between local vertices `i` and `j` (i != j) of `cell`.
+struct Edge {
+  CellId cell = kNoCell;
+  int i = 0;
+  int j = 1;
+};
+
+/// An input point that is not a vertex because its power cell is empty (Edelsbrunner–Shah:
+/// redundant point). `cell` is a cell of the final triangulation containing the point (in
+/// its closure) whose orthosphere the point is *not* in conflict with, i.e. the point's
+/// power against that orthosphere is positive (after perturbation).
+struct HiddenPoint {
+  VertexId point = 0;
+  CellId cell = kNoCell;
+};
+
+/// An input point with exactly the coordinates of the vertex `vertex`: merged into it. The
+/// vertex kept is the one with the larger weight; equal weights are decided by the symbolic
+/// perturbation (see predicates.hpp), so the choice does not depend on insertion order.
+struct DuplicatePoint {
+  VertexId point = 0;
+  VertexId vertex = 0;
+};
+
+/// The dual of a facet in the power diagram: the segment between the orthocentres of its two
+/// cells, or, when one cell is infinite, the ray from the finite cell's orthocentre along the
+/// outward normal of the hull facet. Double constructions.
+struct DualSegment {
+  Point3 source;
+  Point3 target;      ///< meaningful iff !is_ray
+  Vec3 direction;     ///< ray direction (outward hull-facet normal, not normalised) iff is_ray
+  bool is_ray = false;
+};
+
+/// How the triangulation is built.
+struct TriangulationOptions {
+  /// BRIO rounds, each sorted along a Hilbert curve. false: insert in input order.
+  bool spatial_sort = true;
+  /// Seed of the BRIO shuffle and of the walk's random choices (the result, being the
+  /// unique perturbed regular triangulation, does not depend on it; only the speed does).
+  std::uint64_t seed = 0x9E3779B97F4A7C15ull;
+  /// Called after each input point has been processed (inserted, hidden or merged) with
+  /// the id of that point. Tests use it to call is_valid() after every insertion.
+  std::function<void(const class RegularTriangulation3&, VertexId)> after_insertion;
+};
+
+/// Counts and seconds of the construction.
+struct TriangulationStats {
+  double sort_seconds = 0;
+  double insertion_seconds = 0;
+  std::uint64_t walk_steps = 0;          ///< cells visited by point location
+  std::uint64_t conflict_cells = 0;      ///< cells destroyed by insertions (total)
+  std::uint64_t orient_calls = 0;        ///< orient3d calls of the walk
+  std::uint64_t power_test_calls = 0;    ///< insphere / power tests of the conflict search
+};
+
+/// The result of is_valid(): ok, or the first violated property in words.
+struct ValidityReport {
+  bool ok = true;
+  std::string message;
+  explicit operator bool() const { return ok; }
+};
+
+/// Regular triangulation of weighted points in R³ (Delaunay when unweighted).
+class RegularTriangulation3 {
+ public:
+  /// Delaunay triangulation of `points` (all weights zero; in-sphere fast path).
+  /// \throws InvalidInput if a coordinate is not finite, if there are more than kMaxPoints
+  ///   points, or if the points do not span R³ (fewer than 4 affinely independent points,
+  ///   or all coplanar); the message names the case.
+  explicit RegularTriangulation3(std::vector<Point3> points,
+                                 const TriangulationOptions& options = {});
+
+  /// Regular triangulation of the weighted points (points[i], weights[i]); a ball B(c, r) is
+  /// the weighted point (c, r²). Weights may be negative.
+  /// \throws InvalidInput as above, or if the sizes differ or a weight is not finite.
+  RegularTriangulation3(std::vector<Point3> points, std::vector<double> weights,
+                        const TriangulationOptions& options = {});
+
+  RegularTriangulation3(RegularTriangulation3&&) noexcept;
+  RegularTriangulation3& operator=(RegularTriangulation3&&) noexcept;
+  RegularTriangulation3(const RegularTriangulation3&) = default;
+  RegularTriangulation3& operator=(const RegularTriangulation3&) = default;
+  ~RegularTriangulation3();
+
+  // ---- input -------------------------------------------------------------------------
+
+  /// Number of input points (vertices, hidden and duplicates).
+  std::size_t number_of_points() const { return points_.size(); }
+  /// True iff built from weighted points (even if all weights happen to be zero).
+  bool is_weighted() const { return !weights_.empty(); }
+  /// The input point of id `v`. \pre v < number_of_points().
+  const Point3& point(VertexId v) const { return points_[v]; }
+  /// The weight of input point `v` (0 when unweighted).
+  double weight(VertexId v) const { return weights_.empty() ? 0.0 : weights_[v]; }
+  WeightedPoint weighted_point(VertexId v) const { return {points_[v], weight(v)}; }
+  std::span<const Point3> points() const { return points_; }
+
+  // ---- sizes -------------------------------------------------------------------------
+
+  /// Finite vertices (input points that are vertices).
+  std::size_t number_of_vertices() const { return number_of_vertices_; }
+  /// Live cells, finite and infinite.
+  std::size_t number_of_cells() const { return cells_.size() - free_count_; }
+  /// Live finite cells.
+  std::size_t number_of_finite_cells() const { return number_of_cells() - infinite_count_; }
+  /// One past the largest cell id in use: CellId values below this may be live or free.
+  std::size_t cell_capacity() const { return cells_.size(); }
+
+  // ---- combinatorics -------------------------------------------------------------------
+
+  /// True iff `c` is a live cell id. O(1).
+  bool is_cell(CellId c) const { return c < cells_.size() && cells_[c].v[0] != kFreeMark; }
+  /// True iff input point v is a vertex (not hidden, not merged).
+  bool is_vertex(VertexId v) const { return v < vertex_cell_.size() && vertex_cell_[v] != kNoCell; }
+  static bool is_infinite_vertex(VertexId v) { return v == kInfiniteVertex; }
+  bool is_infinite(CellId c) const;
+  bool is_infinite(const Facet& f) const;
+  bool is_infinite(const Edge& e) const;
+
+  /// Vertex i (0..3) of cell c. \pre is_cell(c).
+  VertexId vertex(CellId c, int i) const { return cells_[c].v[i]; }
+  std::array<VertexId, 4> vertices(CellId c) const;
+  /// The neighbour of c across its facet i.
+  CellId neighbor(CellId c, int i) const { return cells_[c].n[i] >> 2; }
+  /// The index of c's facet i in neighbor(c, i): neighbor(neighbor(c,i), mirror_index(c,i)) == c.
+  int mirror_index(CellId c, int i) const { return static_cast<int>(cells_[c].n[i] & 3u); }
+  /// The same facet seen from the other cell.
+  Facet mirror_facet(const Facet& f) const {
+    return {neighbor(f.cell, f.index), mirror_index(f.cell, f.index)};
+  }
+  /// Local index of vertex v in cell c, or −1.
+  int index(CellId c, VertexId v) const;
+  /// The three vertices of facet f, ordered so that (vertex opposite f, a, b, c) keeps the
+  /// orientation of the cell, i.e. for a finite facet of a finite cell the triangle is
+  /// counter-clockwise seen from outside the cell.
+  std::array<VertexId, 3> facet_vertices(const Facet& f) const;
+
+  /// Some cell incident to vertex v, or kNoCell if v is not a vertex.
+  CellId incident_cell(VertexId v) const { return is_vertex(v) ? vertex_cell_[v] : kNoCell; }
+  /// All cells (finite and infinite) incident to vertex v. \pre is_vertex(v).
+  std::vector<CellId> incident_cells(VertexId v) const;
+  /// Appends to `out` (cleared first); reuse the vector to avoid allocations.
+  void incident_cells(VertexId v, std::vector<CellId>& out) const;
+  /// The finite vertices adjacent to v by an edge (plus nothing for the infinite vertex).
+  std::vector<VertexId> adjacent_vertices(VertexId v) const;
+  /// True iff v lies on the convex hull (its power/Voronoi cell is unbounded).
+  bool is_on_convex_hull(VertexId v) const;
+  /// The cells around edge e, in cyclic order, starting with e.cell.
+  std::vector<CellId> cells_around_edge(const Edge& e) const;
+
+  /// Calls f(CellId) for every live finite cell, in increasing id order.
+  template <class F>
+  void for_each_finite_cell(F&& f) const {
+    for (CellId c = 0; c < cells_.size(); ++c) {
+      const Cell& k = cells_[c];
+      if (k.v[0] == kFreeMark || k.v[0] == kInfiniteVertex || k.v[1] == kInfiniteVertex ||
+          k.v[2] == kInfiniteVertex || k.v[3] == kInfiniteVertex) {
+        continue;
+      }
+      f(c);
+    }
+  }
+  /// Calls f(CellId) for every live cell, finite or infinite.
+  template <class F>
+  void for_each_cell(F&& f) const {
+    for (CellId c = 0; c < cells_.size(); ++c) {
+      if (cells_[c].v[0] != kFreeMark) f(c);
+    }
+  }
+  /// The live finite cells, in increasing id order.
+  std::vector<CellId> finite_cells() const;
+  /// Convex-hull facets as facets of finite cells (facet.index opposite the interior vertex);
+  /// facet_vertices() of each is counter-clockwise seen from outside the hull.
+  std::vector<Facet> convex_hull_facets() const;
+
+  // ---- constructions (double arithmetic: measurements, not decisions) -------------------
+
+  /// Circumcentre of finite cell c (centre of the sphere through its vertices' points,
+  /// ignoring weights). Double arithmetic, relative to the cell's first vertex; inaccurate
+  /// for nearly flat cells. \pre c finite.
+  Point3 circumcenter(CellId c) const;
+  /// Squared circumradius of finite cell c (double).
+  double squared_circumradius(CellId c) const;
+  /// Orthocentre of finite cell c: the centre of the sphere orthogonal to its four weighted
+  /// vertices (the power-diagram vertex dual to c). Equals circumcenter() when unweighted.
+  /// Double arithmetic. \pre c finite.
+  Point3 orthocenter(CellId c) const;
+  /// Squared radius of the orthosphere (its weight; may be negative). Double arithmetic.
+  double squared_orthoradius(CellId c) const;
+
+  // ---- power diagram ---------------------------------------------------------------------
+
+  /// The finite cells incident to v: their orthocentres are the vertices of v's power cell
+  /// (Voronoi cell when unweighted). The cell is unbounded iff is_on_convex_hull(v).
+  /// \pre is_vertex(v).
+  std::vector<CellId> power_cell_vertices(VertexId v) const;
+  /// The dual power edge of a facet (segment or ray), see DualSegment.
+  DualSegment dual(const Facet& f) const;
+  /// The dual power face of an edge: the cells around the edge in cyclic order (each finite
+  /// one contributes its orthocentre; an infinite one means the face is unbounded).
+  std::vector<CellId> dual(const Edge& e) const { return cells_around_edge(e); }
+
+  // ---- point queries ---------------------------------------------------------------------
+
+  /// A cell whose closure contains q (an infinite cell if q is outside the hull or on it),
+  /// found by a walk from `hint` (any live cell; kNoCell: a default start). Exact.
+  CellId locate(const Point3& q, CellId hint = kNoCell) const;
+  /// The vertex v minimising the power distance |q − p_v|² − w_v (Euclidean distance when
+  /// unweighted), i.e. whose power cell contains q. Ties are broken arbitrarily. Exact.
+  VertexId nearest_power_vertex(const Point3& q, CellId hint = kNoCell) const;
+
+  // ---- reports ---------------------------------------------------------------------------
+
+  std::span<const HiddenPoint> hidden_points() const { return hidden_; }
+  std::span<const DuplicatePoint> duplicate_points() const { return duplicates_; }
+  const TriangulationStats& stats() const { return stats_; }
+
+  /// Full check, geometry with exact predicates only: neighbour symmetry and mirror indices,
+  /// exactly one infinite vertex per infinite cell, Euler characteristic of the 3-sphere
+  /// (V − E + F − C = 0), every finite cell positively oriented, every facet locally regular
+  /// (perturbed power test), every processed input point a vertex, hidden (positive power
+  /// against the orthosphere of a cell containing it) or merged (same coordinates as its
+  /// vertex, and not in conflict with it). Cost O(cells · degree).
+  ValidityReport is_valid() const;
+
+ private:
+  struct Cell {
+    VertexId v[4];
+    std::uint32_t n[4];  // neighbour id << 2 | mirror index
+  };
+  static constexpr VertexId kFreeMark = 0xFFFFFFFEu;
+
+  friend class Builder;
+
+  /// Index (0..3) of the infinite vertex in c, or −1.
+  int infinite_index(CellId c) const {
+    const Cell& k = cells_[c];
+    for (int i = 0; i < 4; ++i) {
+      if (k.v[i] == kInfiniteVertex) return i;
+    }
+    return -1;
+  }
+  /// Sign of orient3d of cell c with its vertex i replaced by q (the other three finite).
+  int orient_replaced(CellId c, int i, const Point3& q) const;
+  /// Remembering stochastic walk from `start` (a live cell) to a cell whose closure contains
+  /// q; an infinite cell iff q is strictly outside the hull. `rng` is the caller's state.
+  CellId walk(const Point3& q, CellId start, std::uint64_t& rng, std::uint64_t& steps) const;
+  /// Some live cell, for walks without a usable hint.
+  CellId any_cell() const;
+  /// Rebuilds vertex_cell_, the counts and the hidden/duplicate reports from the cells and
+  /// the raw hidden records (point, hint cell).
+  void finalize(std::span<const HiddenPoint> raw_hidden);
+
+  std::vector<Point3> points_;
+  std::vector<double> weights_;
+  std::vector<Cell> cells_;
+  std::vector<CellId> vertex_cell_;   // per input point: an incident cell or kNoCell
+  std::vector<HiddenPoint> hidden_;
+  std::vector<DuplicatePoint> duplicates_;
+  std::vector<VertexId> order_;       // insertion order (only during construction)
+  std::size_t processed_ = 0;         // points of order_ processed so far
+  CellId free_head_ = kNoCell;        // free list through Cell::n[0]
+  std::size_t free_count_ = 0;
+  std::size_t infinite_count_ = 0;
+  std::size_t number_of_vertices_ = 0;
+  TriangulationStats stats_;
+};
+
+}  // namespace rstruct::triangulation

@@ -1,0 +1,121 @@
+#include "rstruct/poles/pole_analysis.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "rstruct/core/error.hpp"
+#include "rstruct/triangulation/regular_triangulation_3.hpp"
+
+namespace rstruct::poles {
+namespace {
+
+Box3 checked_bounding_box(std::span<const Point3> samples) {
+  if (samples.size() < 4) {
+    throw InvalidInput("poles: need at least 4 samples, got " + std::to_string(samples.size()));
+  }
+  Box3 box;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    if (!is_finite(samples[i])) {
+      throw InvalidInput("poles: sample " + std::to_string(i) + " has a non-finite coordinate");
+    }
+    box.add(samples[i]);
+  }
+  if (!(box.max_extent() > 0)) throw InvalidInput("poles: all samples coincide");
+  return box;
+}
+
+/// The finite cells as a flat array, and each sample's representative vertex.
+struct Soup {
+  std::vector<std::array<std::uint32_t, 4>> tets;
+  std::vector<std::uint32_t> representative;
+};
+
+Soup soup_of(const triangulation::RegularTriangulation3& dt, std::size_t sample_count) {
+  Soup soup;
+  soup.tets.reserve(dt.number_of_finite_cells());
+  dt.for_each_finite_cell([&](triangulation::CellId c) { soup.tets.push_back(dt.vertices(c)); });
+  soup.representative.resize(sample_count);
+  for (std::uint32_t s = 0; s < sample_count; ++s) soup.representative[s] = s;
+  for (const auto& d : dt.duplicate_points()) {
+    if (d.point < sample_count) soup.representative[d.point] = d.vertex;
+  }
+  for (const auto& h : dt.hidden_points()) {
+    // Unweighted Delaunay hides nothing; a hidden sample would be a triangulation bug.
+    throw InternalError("poles: Delaunay triangulation hid sample " + std::to_string(h.point));
+  }
+  return soup;
+}
+
+void record(Report& report, const PoleAnalysis& analysis) {
+  auto& j = report.data()["poles"];
+  j["samples"] = analysis.poles.sample_count;
+  j["duplicate_samples"] = analysis.duplicate_samples;
+  j["tetrahedra"] = analysis.tetrahedra;
+  j["poles"] = analysis.poles.size();
+  const LabelingStats& l = analysis.labeling;
+  j["inner"] = l.inner;
+  j["outer"] = l.outer;
+  j["unlabelled"] = l.unlabelled;
+  j["ties"] = l.ties;
+  j["contradictory"] = l.contradictory;
+  j["inconsistent_samples"] = l.inconsistent_samples;
+  j["samples_without_inner_pole"] = l.samples_without_inner;
+  j["label_pairs_examined"] = l.pairs_examined;
+}
+
+}  // namespace
+
+std::vector<Point3> bounding_box_sites(std::span<const Point3> samples, double box_scale) {
+  if (!std::isfinite(box_scale) || box_scale < 2) {
+    std::ostringstream message;
+    message << "poles: box scale " << box_scale << " must be finite and >= 2";
+    throw InvalidInput(message.str());
+  }
+  const Box3 box = checked_bounding_box(samples);
+  const Point3 centre = box.centre();
+  const double h = box_scale * box.max_extent();
+  std::vector<Point3> sites;
+  for (int k = 0; k < 8; ++k) {
+    sites.push_back({centre.x + ((k & 1) != 0 ? h : -h), centre.y + ((k & 2) != 0 ? h : -h),
+                     centre.z + ((k & 4) != 0 ? h : -h)});
+  }
+  return sites;
+}
+
+PoleAnalysis analyse_poles(std::span<const Point3> samples, const PoleAnalysisOptions& options,
+                           Report* report) {
+  Report local;
+  Report& r = report != nullptr ? *report : local;
+  PoleAnalysis analysis;
+  std::vector<Point3> sites(samples.begin(), samples.end());
+  const std::vector<Point3> box = bounding_box_sites(samples, options.box_scale);
+  analysis.bbox_diagonal = checked_bounding_box(samples).diagonal();
+  sites.insert(sites.end(), box.begin(), box.end());
+  Soup soup;
+  {
+    Report::Stage stage(r, "delaunay");
+    const triangulation::RegularTriangulation3 dt(std::move(sites));
+    soup = soup_of(dt, samples.size());
+    analysis.duplicate_samples = dt.duplicate_points().size();
+    sites.assign(dt.points().begin(), dt.points().end());
+  }
+  analysis.tetrahedra = soup.tets.size();
+  {
+    Report::Stage stage(r, "poles");
+    analysis.poles =
+        compute_poles({sites, samples.size(), soup.tets, soup.representative}, options.threads);
+  }
+  soup = Soup{};
+  {
+    Report::Stage stage(r, "labels");
+    analysis.labeling = label_poles(analysis.poles, samples, options.labeling);
+  }
+  {
+    Report::Stage stage(r, "pole distance");
+    analysis.dhat = pole_distance(samples, analysis.poles, options.threads);
+  }
+  if (report != nullptr) record(*report, analysis);
+  return analysis;
+}
+
+}  // namespace rstruct::poles

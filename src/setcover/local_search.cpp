@@ -1,0 +1,227 @@
+#include "local_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "rstruct/core/assert.hpp"
+
+namespace rstruct::setcover::detail {
+
+namespace {
+
+class RowWeighting {
+ public:
+  RowWeighting(const Instance& inst, std::uint64_t seed)
+      : inst_(inst),
+        rng_(seed),
+        cover_(static_cast<std::size_t>(inst.num_rows()), 0),
+        weight_(static_cast<std::size_t>(inst.num_rows()), 1),
+        uncovered_pos_(static_cast<std::size_t>(inst.num_rows()), -1),
+        in_sol_(static_cast<std::size_t>(inst.num_cols()), 0),
+        sol_pos_(static_cast<std::size_t>(inst.num_cols()), -1),
+        score_(static_cast<std::size_t>(inst.num_cols()), 0),
+        stamp_(static_cast<std::size_t>(inst.num_cols()), 0),
+        can_add_(static_cast<std::size_t>(inst.num_cols()), 1) {
+    for (std::int32_t i = 0; i < inst.num_rows(); ++i) push_uncovered(i);
+    for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
+      score_[j] = static_cast<std::int64_t>(inst.column(j).size());
+    }
+  }
+
+  void add(std::int32_t k) {
+    for (std::int32_t i : inst_.column(k)) {
+      if (cover_[i] == 0) {
+        for (std::int32_t l : inst_.row(i)) score_[l] -= weight_[i];
+        score_[k] += weight_[i];
+        pop_uncovered(i);
+      } else if (cover_[i] == 1) {
+        score_[sole_cover(i, k)] += weight_[i];
+      }
+      ++cover_[i];
+    }
+    score_[k] = -score_[k];
+    in_sol_[k] = 1;
+    sol_pos_[k] = static_cast<std::int32_t>(sol_.size());
+    sol_.push_back(k);
+    cost_ += inst_.cost(k);
+    touch_neighbours(k);
+  }
+
+  void remove(std::int32_t j) {
+    for (std::int32_t i : inst_.column(j)) {
+      --cover_[i];
+      if (cover_[i] == 0) {
+        for (std::int32_t l : inst_.row(i)) score_[l] += weight_[i];
+        score_[j] -= weight_[i];
+        push_uncovered(i);
+      } else if (cover_[i] == 1) {
+        score_[sole_cover(i, j)] -= weight_[i];
+      }
+    }
+    score_[j] = -score_[j];
+    in_sol_[j] = 0;
+    const std::int32_t p = sol_pos_[j];
+    sol_[p] = sol_.back();
+    sol_pos_[sol_[p]] = p;
+    sol_.pop_back();
+    sol_pos_[j] = -1;
+    cost_ -= inst_.cost(j);
+    touch_neighbours(j);
+    can_add_[j] = 0;
+  }
+
+  /// Column of the solution to remove: largest score / cost (smallest loss per unit cost),
+  /// ties to the oldest. Large solutions are sampled (best of kSample) to stay O(1).
+  std::int32_t pick_removal(std::int32_t tabu) {
+    std::int32_t best = -1;
+    auto better = [&](std::int32_t a, std::int32_t b) {
+      const double ra = static_cast<double>(score_[a]) / inst_.cost(a);
+      const double rb = static_cast<double>(score_[b]) / inst_.cost(b);
+      return ra > rb || (ra == rb && stamp_[a] < stamp_[b]);
+    };
+    const std::size_t n = sol_.size();
+    constexpr std::size_t kSample = 64;
+    if (n <= 4 * kSample) {
+      for (std::int32_t j : sol_) {
+        if (j != tabu && (best < 0 || better(j, best))) best = j;
+      }
+    } else {
+      for (std::size_t t = 0; t < kSample; ++t) {
+        const std::int32_t j = sol_[rng_() % n];
+        if (j != tabu && (best < 0 || better(j, best))) best = j;
+      }
+      if (best < 0) return pick_removal_scan(tabu, better);
+    }
+    return best;
+  }
+
+  template <class Better>
+  std::int32_t pick_removal_scan(std::int32_t tabu, Better better) const {
+    std::int32_t best = -1;
+    for (std::int32_t j : sol_) {
+      if (j != tabu && (best < 0 || better(j, best))) best = j;
+    }
+    return best;
+  }
+
+  /// Column to add for a random uncovered row: largest score / cost among those allowed by
+  /// configuration checking (all, if none is), ties to the oldest.
+  std::int32_t pick_addition() {
+    const std::int32_t r = uncovered_[rng_() % uncovered_.size()];
+    std::int32_t best = -1;
+    bool best_allowed = false;
+    double best_ratio = 0.0;
+    for (std::int32_t k : inst_.row(r)) {
+      const double ratio = static_cast<double>(score_[k]) / inst_.cost(k);
+      const bool allowed = can_add_[k] != 0;
+      if (best < 0 || (allowed && !best_allowed) ||
+          (allowed == best_allowed &&
+           (ratio > best_ratio || (ratio == best_ratio && stamp_[k] < stamp_[best])))) {
+        best = k;
+        best_allowed = allowed;
+        best_ratio = ratio;
+      }
+    }
+    return best;
+  }
+
+  void bump_weights() {
+    for (std::int32_t i : uncovered_) {
+      ++weight_[i];
+      for (std::int32_t l : inst_.row(i)) ++score_[l];
+    }
+  }
+
+  double exact_cost() const {
+    double c = 0.0;
+    for (std::int32_t j : sol_) c += inst_.cost(j);
+    return c;
+  }
+
+  const Instance& inst_;
+  std::mt19937_64 rng_;
+  std::vector<std::int32_t> cover_;
+  std::vector<std::int64_t> weight_;
+  std::vector<std::int32_t> uncovered_;
+  std::vector<std::int32_t> uncovered_pos_;
+  std::vector<char> in_sol_;
+  std::vector<std::int32_t> sol_;
+  std::vector<std::int32_t> sol_pos_;
+  std::vector<std::int64_t> score_;
+  std::vector<std::int64_t> stamp_;
+  std::vector<char> can_add_;
+  double cost_ = 0.0;
+
+ private:
+  std::int32_t sole_cover(std::int32_t i, std::int32_t except) const {
+    for (std::int32_t l : inst_.row(i)) {
+      if (l != except && in_sol_[l]) return l;
+    }
+    RSTRUCT_ASSERT_MSG(false, "local search: coverage count out of sync");
+  }
+  void touch_neighbours(std::int32_t j) {
+    for (std::int32_t i : inst_.column(j)) {
+      for (std::int32_t l : inst_.row(i)) can_add_[l] = 1;
+    }
+  }
+  void push_uncovered(std::int32_t i) {
+    uncovered_pos_[i] = static_cast<std::int32_t>(uncovered_.size());
+    uncovered_.push_back(i);
+  }
+  void pop_uncovered(std::int32_t i) {
+    const std::int32_t p = uncovered_pos_[i];
+    uncovered_[p] = uncovered_.back();
+    uncovered_pos_[uncovered_[p]] = p;
+    uncovered_.pop_back();
+    uncovered_pos_[i] = -1;
+  }
+};
+
+}  // namespace
+
+LocalSearchResult row_weighting_search(const Instance& inst, const std::vector<std::int32_t>& start,
+                                       double start_cost, const LocalSearchOptions& options,
+                                       const Stopwatch& clock) {
+  LocalSearchResult result;
+  result.best_cost = start_cost;
+  if (inst.num_rows() == 0) {
+    result.best_cost = 0.0;
+    return result;
+  }
+  RowWeighting s(inst, options.seed);
+  for (std::int32_t j : start) {
+    if (!s.in_sol_[j]) s.add(j);
+  }
+  const double slack = inst.has_integer_costs() ? 0.5 : 1e-9 * std::max(1.0, std::abs(start_cost));
+  std::int32_t tabu = -1;
+  std::int64_t it = 0;
+  while (true) {
+    if (s.uncovered_.empty()) {
+      const double c = s.exact_cost();
+      if (c < result.best_cost - slack || (result.best.empty() && c <= result.best_cost + slack)) {
+        result.best = s.sol_;
+        result.best_cost = c;
+        result.seconds_to_best = clock.seconds();
+        if (c <= options.target + slack) break;
+      }
+      s.remove(s.pick_removal(-1));
+      continue;
+    }
+    if (++it > options.max_iterations || ((it & 255) == 0 && clock.seconds() > options.deadline)) break;
+    const std::int32_t k = s.pick_addition();
+    s.add(k);
+    s.stamp_[k] = it;
+    tabu = k;
+    while (s.cost_ >= result.best_cost - slack && s.sol_.size() > 1) {
+      const std::int32_t j = s.pick_removal(tabu);
+      s.remove(j);
+      s.stamp_[j] = it;
+    }
+    s.bump_weights();
+  }
+  result.iterations = it;
+  return result;
+}
+
+}  // namespace rstruct::setcover::detail

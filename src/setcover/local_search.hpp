@@ -1,0 +1,39 @@
+#pragma once
+// Row-weighting local search for set cover, after RWLS (Gao, Weise, Li 2015: "An efficient
+// local search heuristic with row weighting for the unicost set covering problem"), extended
+// to weighted costs by comparing score / cost. The search keeps the current cost below the
+// best found, removing columns with the smallest weighted loss and adding, for a random
+// uncovered row, its column with the largest weighted gain; rows that stay uncovered gain
+// weight. Configuration checking and time stamps break cycles.
+
+#include <cstdint>
+#include <vector>
+
+#include "rstruct/core/stopwatch.hpp"
+#include "rstruct/setcover/instance.hpp"
+
+namespace rstruct::setcover::detail {
+
+struct LocalSearchOptions {
+  std::int64_t max_iterations = 1'000'000;
+  double deadline = 1.0;  ///< seconds on the clock
+  std::uint64_t seed = 1;
+  /// Stop as soon as a cover of cost <= target is found (a proven lower bound).
+  double target = 0.0;
+};
+
+struct LocalSearchResult {
+  std::vector<std::int32_t> best;  ///< best cover found (may be `start` itself)
+  double best_cost = 0.0;
+  std::int64_t iterations = 0;
+  double seconds_to_best = 0.0;  ///< clock reading when the best was found
+};
+
+/// Improves the cover `start` (cost `start_cost`) of `inst`. Columns in `start` need not
+/// form a cover if `start_cost` is the cost of some known cover elsewhere; the result then
+/// holds the first cover found cheaper than it, or is empty.
+LocalSearchResult row_weighting_search(const Instance& inst, const std::vector<std::int32_t>& start,
+                                       double start_cost, const LocalSearchOptions& options,
+                                       const Stopwatch& clock);
+
+}  // namespace rstruct::setcover::detail

@@ -1,0 +1,220 @@
+#include "reduction.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "rstruct/core/assert.hpp"
+
+namespace rstruct::setcover::detail {
+
+namespace {
+
+/// Alive flags and alive counts over the original instance.
+class Presolver {
+ public:
+  explicit Presolver(const Instance& inst)
+      : inst_(inst),
+        row_alive_(static_cast<std::size_t>(inst.num_rows()), 1),
+        col_alive_(static_cast<std::size_t>(inst.num_cols()), 1),
+        row_len_(static_cast<std::size_t>(inst.num_rows())),
+        col_len_(static_cast<std::size_t>(inst.num_cols())),
+        mark_(static_cast<std::size_t>(std::max(inst.num_rows(), inst.num_cols())), 0) {
+    for (std::int32_t i = 0; i < inst.num_rows(); ++i) row_len_[i] = static_cast<std::int32_t>(inst.row(i).size());
+    for (std::int32_t j = 0; j < inst.num_cols(); ++j) col_len_[j] = static_cast<std::int32_t>(inst.column(j).size());
+  }
+
+  void kill_col(std::int32_t j) {
+    col_alive_[j] = 0;
+    for (std::int32_t i : inst_.column(j)) --row_len_[i];
+  }
+  void kill_row(std::int32_t i) {
+    row_alive_[i] = 0;
+    for (std::int32_t j : inst_.row(i)) {
+      if (--col_len_[j] == 0 && col_alive_[j]) kill_col(j);
+    }
+  }
+  /// Takes column j into every solution: its rows are covered.
+  void fix_col(std::int32_t j) {
+    out.fixed_cols.push_back(j);
+    kill_col(j);
+    for (std::int32_t i : inst_.column(j)) {
+      if (row_alive_[i]) kill_row(i);
+    }
+  }
+
+  void take_zero_cost() {
+    for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
+      if (col_len_[j] == 0) col_alive_[j] = 0;
+    }
+    for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
+      if (col_alive_[j] && inst_.cost(j) == 0.0) fix_col(j);
+    }
+  }
+
+  bool force_singletons() {
+    bool changed = false;
+    for (std::int32_t i = 0; i < inst_.num_rows(); ++i) {
+      if (!row_alive_[i] || row_len_[i] != 1) continue;
+      std::int32_t j = -1;
+      for (std::int32_t k : inst_.row(i)) {
+        if (col_alive_[k]) j = k;
+      }
+      RSTRUCT_ASSERT(j >= 0);
+      out.forced_multipliers.emplace_back(i, inst_.cost(j));
+      ++out.forced_cols;
+      fix_col(j);
+      changed = true;
+    }
+    return changed;
+  }
+
+  /// Column j is dominated by k when its alive rows are a subset of k's and c_k <= c_j
+  /// (identical columns: the larger index goes).
+  bool remove_dominated_cols() {
+    bool changed = false;
+    for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
+      if (!col_alive_[j]) continue;
+      std::int32_t pivot = -1;
+      for (std::int32_t i : inst_.column(j)) {
+        if (row_alive_[i] && (pivot < 0 || row_len_[i] < row_len_[pivot])) pivot = i;
+      }
+      for (std::int32_t i : inst_.column(j)) mark_[i] = row_alive_[i];
+      bool dominated = false;
+      for (std::int32_t k : inst_.row(pivot)) {
+        if (k == j || !col_alive_[k] || col_len_[k] < col_len_[j] || inst_.cost(k) > inst_.cost(j)) continue;
+        if (col_len_[k] == col_len_[j] && inst_.cost(k) == inst_.cost(j) && k > j) continue;
+        std::int32_t hits = 0;
+        for (std::int32_t i : inst_.column(k)) hits += mark_[i];
+        if (hits == col_len_[j]) {
+          dominated = true;
+          break;
+        }
+      }
+      for (std::int32_t i : inst_.column(j)) mark_[i] = 0;
+      if (dominated) {
+        kill_col(j);
+        ++out.dominated_cols;
+        changed = true;
+      }
+    }
+    return changed;
+  }
+
+  /// Row i is dominated by row k when k's alive columns are a subset of i's: covering k
+  /// covers i. Identical rows: the larger index goes.
+  bool remove_dominated_rows() {
+    bool changed = false;
+    for (std::int32_t k = 0; k < inst_.num_rows(); ++k) {
+      if (!row_alive_[k]) continue;
+      std::int32_t pivot = -1;
+      for (std::int32_t j : inst_.row(k)) {
+        if (col_alive_[j] && (pivot < 0 || col_len_[j] < col_len_[pivot])) pivot = j;
+      }
+      for (std::int32_t j : inst_.row(k)) mark_[j] = col_alive_[j];
+      for (std::int32_t i : inst_.column(pivot)) {
+        if (i == k || !row_alive_[i] || row_len_[i] < row_len_[k]) continue;
+        if (row_len_[i] == row_len_[k] && i < k) continue;
+        std::int32_t hits = 0;
+        for (std::int32_t j : inst_.row(i)) hits += mark_[j];
+        if (hits == row_len_[k]) {
+          kill_row(i);
+          ++out.dominated_rows;
+          changed = true;
+        }
+      }
+      for (std::int32_t j : inst_.row(k)) mark_[j] = 0;
+    }
+    return changed;
+  }
+
+  void split_components();
+
+  Reduction out;
+
+ private:
+  const Instance& inst_;
+  std::vector<char> row_alive_, col_alive_;
+  std::vector<std::int32_t> row_len_, col_len_;
+  std::vector<std::int32_t> mark_;
+};
+
+std::int32_t find_root(std::vector<std::int32_t>& parent, std::int32_t x) {
+  while (parent[x] != x) {
+    parent[x] = parent[parent[x]];
+    x = parent[x];
+  }
+  return x;
+}
+
+void Presolver::split_components() {
+  const std::int32_t m = inst_.num_rows();
+  std::vector<std::int32_t> parent(static_cast<std::size_t>(m));
+  std::iota(parent.begin(), parent.end(), 0);
+  for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
+    if (!col_alive_[j]) continue;
+    std::int32_t first = -1;
+    for (std::int32_t i : inst_.column(j)) {
+      if (!row_alive_[i]) continue;
+      if (first < 0) {
+        first = find_root(parent, i);
+      } else {
+        const std::int32_t r = find_root(parent, i);
+        if (r != first) parent[r] = first;
+      }
+    }
+  }
+  std::vector<std::int32_t> comp_of_root(static_cast<std::size_t>(m), -1);
+  std::vector<std::int32_t> local(static_cast<std::size_t>(m), -1);
+  for (std::int32_t i = 0; i < m; ++i) {
+    if (!row_alive_[i]) continue;
+    const std::int32_t r = find_root(parent, i);
+    if (comp_of_root[r] < 0) {
+      comp_of_root[r] = static_cast<std::int32_t>(out.components.size());
+      out.components.emplace_back();
+    }
+    auto& c = out.components[static_cast<std::size_t>(comp_of_root[r])];
+    local[i] = static_cast<std::int32_t>(c.rows.size());
+    c.rows.push_back(i);
+  }
+  std::vector<std::vector<std::int64_t>> starts(out.components.size(), std::vector<std::int64_t>{0});
+  std::vector<std::vector<std::int32_t>> entries(out.components.size());
+  std::vector<std::vector<double>> costs(out.components.size());
+  for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
+    if (!col_alive_[j]) continue;
+    std::int32_t comp = -1;
+    for (std::int32_t i : inst_.column(j)) {
+      if (!row_alive_[i]) continue;
+      comp = comp_of_root[find_root(parent, i)];
+      entries[comp].push_back(local[i]);
+    }
+    RSTRUCT_ASSERT(comp >= 0);
+    starts[comp].push_back(static_cast<std::int64_t>(entries[comp].size()));
+    costs[comp].push_back(inst_.cost(j));
+    out.components[comp].cols.push_back(j);
+  }
+  for (std::size_t c = 0; c < out.components.size(); ++c) {
+    auto& comp = out.components[c];
+    comp.instance = Instance::from_csr(static_cast<std::int32_t>(comp.rows.size()), starts[c],
+                                       entries[c], std::move(costs[c]));
+  }
+}
+
+}  // namespace
+
+Reduction reduce(const Instance& inst, bool use_domination) {
+  Presolver p(inst);
+  p.take_zero_cost();
+  for (int pass = 0; pass < 8; ++pass) {
+    bool changed = p.force_singletons();
+    if (use_domination) {
+      changed = p.remove_dominated_rows() || changed;
+      changed = p.remove_dominated_cols() || changed;
+      changed = p.force_singletons() || changed;
+    }
+    if (!changed) break;
+  }
+  p.split_components();
+  return std::move(p.out);
+}
+
+}  // namespace rstruct::setcover::detail

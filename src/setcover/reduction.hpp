@@ -1,0 +1,34 @@
+#pragma once
+// Presolve of a set-cover instance (issue 6, "Reduction"): zero-cost columns taken, rows
+// covered by a single column force it, dominated rows and dominated columns removed; the
+// rest split into connected components (rows linked through shared columns).
+
+#include <cstdint>
+#include <vector>
+
+#include "rstruct/setcover/instance.hpp"
+
+namespace rstruct::setcover::detail {
+
+/// One connected component of the reduced instance, with its maps to the original.
+struct Component {
+  Instance instance;
+  std::vector<std::int32_t> rows;  ///< component row -> original row
+  std::vector<std::int32_t> cols;  ///< component column -> original column
+};
+
+struct Reduction {
+  std::vector<std::int32_t> fixed_cols;  ///< original columns every solution takes
+  /// Multipliers implied by the forced columns: (original row, value). A row covered only
+  /// by column j gets u = c_j; with all other rows of j at 0, j's reduced cost is 0.
+  std::vector<std::pair<std::int32_t, double>> forced_multipliers;
+  std::vector<Component> components;
+  std::int64_t dominated_rows = 0;
+  std::int64_t dominated_cols = 0;
+  std::int64_t forced_cols = 0;
+};
+
+/// Reduces `inst`. \pre every row is covered by some column.
+Reduction reduce(const Instance& inst, bool use_domination = true);
+
+}  // namespace rstruct::setcover::detail

@@ -1,0 +1,184 @@
+#include "rstruct/setcover/solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "greedy.hpp"
+#include "local_search.hpp"
+#include "reduction.hpp"
+#include "rstruct/core/assert.hpp"
+#include "rstruct/core/error.hpp"
+#include "rstruct/core/stopwatch.hpp"
+#include "subgradient.hpp"
+
+namespace rstruct::setcover {
+
+namespace {
+
+using detail::Component;
+
+struct ComponentResult {
+  std::vector<std::int32_t> cover;  ///< component columns
+  double cost = 0.0;
+  std::vector<double> u;            ///< component rows
+  double greedy_cost = 0.0;
+  double seconds_to_best = 0.0;
+  std::int64_t subgradient_iterations = 0;
+  std::int64_t local_search_iterations = 0;
+};
+
+struct Budget {
+  double deadline = 0.0;              ///< seconds on the solver clock
+  std::int64_t local_search_iterations = 0;  ///< 0: unlimited
+  std::int32_t subgradient_iterations = 0;
+  std::uint64_t seed = 1;
+};
+
+/// Columns j that may still be in a cover cheaper than `ub`: bound + reduced_j must stay
+/// below it (any cover containing j costs at least L(u) + max(0, r_j)).
+std::vector<char> reduced_cost_filter(const Instance& inst, const detail::LagrangianState& st,
+                                      std::vector<double>& reduced) {
+  detail::lagrangian_bound(inst, st.u, &reduced);
+  const double slack = 1e-9 * std::max(1.0, std::abs(st.cover_cost));
+  const double limit = inst.has_integer_costs() ? st.cover_cost - 1.0 + slack : st.cover_cost - slack;
+  std::vector<char> allowed(static_cast<std::size_t>(inst.num_cols()), 0);
+  for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
+    allowed[j] = st.bound + std::max(0.0, reduced[j]) <= limit;
+  }
+  return allowed;
+}
+
+/// Local search on the columns that survive reduced-cost fixing.
+void improve_by_local_search(const Instance& inst, detail::LagrangianState& st,
+                             const Budget& budget, const Stopwatch& clock, ComponentResult& out) {
+  std::vector<double> reduced;
+  const std::vector<char> allowed = reduced_cost_filter(inst, st, reduced);
+  std::vector<std::int32_t> map;
+  std::vector<std::int64_t> start{0};
+  std::vector<std::int32_t> entries;
+  std::vector<double> costs;
+  std::vector<char> row_ok(static_cast<std::size_t>(inst.num_rows()), 0);
+  for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
+    if (!allowed[j]) continue;
+    map.push_back(j);
+    for (std::int32_t i : inst.column(j)) {
+      entries.push_back(i);
+      row_ok[i] = 1;
+    }
+    start.push_back(static_cast<std::int64_t>(entries.size()));
+    costs.push_back(inst.cost(j));
+  }
+  // A row no surviving column covers: no cover is cheaper than the incumbent.
+  if (std::find(row_ok.begin(), row_ok.end(), 0) != row_ok.end()) return;
+  const Instance sub = Instance::from_csr(inst.num_rows(), start, entries, std::move(costs));
+  std::vector<std::int32_t> local_of(static_cast<std::size_t>(inst.num_cols()), -1);
+  for (std::size_t k = 0; k < map.size(); ++k) local_of[map[k]] = static_cast<std::int32_t>(k);
+  std::vector<std::int32_t> seed_cols;
+  for (std::int32_t j : st.cover) {
+    if (local_of[j] >= 0) seed_cols.push_back(local_of[j]);
+  }
+  detail::LocalSearchOptions lso;
+  lso.deadline = budget.deadline;
+  lso.seed = budget.seed;
+  lso.max_iterations = budget.local_search_iterations > 0 ? budget.local_search_iterations : INT64_MAX;
+  lso.target = inst.has_integer_costs() ? std::ceil(st.bound - 1e-9) : st.bound;
+  const auto ls = detail::row_weighting_search(sub, seed_cols, st.cover_cost, lso, clock);
+  out.local_search_iterations = ls.iterations;
+  if (!ls.best.empty() && ls.best_cost < st.cover_cost) {
+    st.cover.clear();
+    for (std::int32_t k : ls.best) st.cover.push_back(map[k]);
+    detail::remove_redundant(inst, st.cover);
+    st.cover_cost = inst.cost_of(st.cover);
+    out.seconds_to_best = ls.seconds_to_best;
+  }
+}
+
+ComponentResult solve_component(const Instance& inst, const Budget& budget, const Stopwatch& clock) {
+  ComponentResult out;
+  detail::LagrangianState st;
+  st.cover = detail::greedy_cover(inst);
+  st.cover_cost = inst.cost_of(st.cover);
+  out.greedy_cost = st.cover_cost;
+  out.seconds_to_best = clock.seconds();
+  st.u = detail::initial_multipliers(inst);
+  st.bound = detail::lagrangian_bound(inst, st.u);
+  const double now = clock.seconds();
+  detail::SubgradientOptions so;
+  so.max_iterations = budget.subgradient_iterations;
+  so.deadline = now + 0.3 * std::max(0.0, budget.deadline - now);
+  const double before = st.cover_cost;
+  detail::subgradient(inst, st, so, clock);
+  if (st.cover_cost < before) out.seconds_to_best = clock.seconds();
+  out.subgradient_iterations = st.iterations;
+  if (!detail::bound_closes_gap(inst, st.bound, st.cover_cost)) {
+    improve_by_local_search(inst, st, budget, clock, out);
+  }
+  out.cover = st.cover;
+  out.cost = st.cover_cost;
+  out.u = st.u;
+  return out;
+}
+
+}  // namespace
+
+Solution solve(const Instance& inst, const SolverOptions& options) {
+  Stopwatch clock;
+  if (const std::int32_t row = inst.first_uncoverable_row(); row >= 0) {
+    throw ComputationFailed("set cover: row " + std::to_string(row) +
+                            " (0-based) is covered by no column; no cover exists");
+  }
+  Solution sol;
+  const detail::Reduction red = detail::reduce(inst, options.use_domination);
+  sol.stats.forced_columns = red.forced_cols;
+  sol.stats.dominated_rows = red.dominated_rows;
+  sol.stats.dominated_columns = red.dominated_cols;
+  sol.stats.components = static_cast<std::int64_t>(red.components.size());
+  std::vector<double> u(static_cast<std::size_t>(inst.num_rows()), 0.0);
+  for (const auto& [row, value] : red.forced_multipliers) u[row] = value;
+  std::vector<std::int32_t> cover = red.fixed_cols;
+  double greedy_cost = inst.cost_of(red.fixed_cols);
+  std::int64_t remaining_nnz = 0;
+  for (const Component& c : red.components) remaining_nnz += c.instance.num_entries() + 1;
+  for (std::size_t k = 0; k < red.components.size(); ++k) {
+    const Component& c = red.components[k];
+    const std::int64_t weight = c.instance.num_entries() + 1;
+    const double share = static_cast<double>(weight) / static_cast<double>(remaining_nnz);
+    remaining_nnz -= weight;
+    Budget budget;
+    const double now = clock.seconds();
+    budget.deadline = now + share * std::max(0.0, options.time_limit - now);
+    budget.seed = options.seed * 0x9E3779B97F4A7C15ULL + k;
+    budget.subgradient_iterations = options.max_subgradient_iterations;
+    if (options.max_local_search_iterations > 0) {
+      budget.local_search_iterations = std::max<std::int64_t>(
+          1, static_cast<std::int64_t>(share * static_cast<double>(options.max_local_search_iterations)));
+    }
+    const ComponentResult r = solve_component(c.instance, budget, clock);
+    for (std::int32_t j : r.cover) cover.push_back(c.cols[j]);
+    for (std::size_t i = 0; i < c.rows.size(); ++i) u[c.rows[i]] = r.u[i];
+    greedy_cost += r.greedy_cost;
+    sol.stats.seconds_to_best = std::max(sol.stats.seconds_to_best, r.seconds_to_best);
+    sol.stats.subgradient_iterations += r.subgradient_iterations;
+    sol.stats.local_search_iterations += r.local_search_iterations;
+  }
+  std::sort(cover.begin(), cover.end());
+  RSTRUCT_ASSERT_MSG(inst.is_cover(cover), "set cover: solver produced a non-cover");
+  sol.columns = cover;
+  sol.cost = inst.cost_of(cover);
+  sol.stats.greedy_cost = greedy_cost;
+  Certificate& cert = sol.certificate;
+  cert.num_rows = inst.num_rows();
+  cert.num_cols = inst.num_cols();
+  cert.unicost = inst.is_unicost();
+  cert.cover = cover;
+  cert.multipliers = to_fixed_point(u, cert.scale);
+  sol.lower_bound = certified_lower_bound(inst, cert);
+  cert.bound_claim = exact_rational_text(sol.lower_bound);
+  cert.cost_claim = exact_cost_text(inst, cover, cert.unicost);
+  sol.gap = sol.cost > 0 ? (sol.cost - sol.lower_bound) / sol.cost : 0.0;
+  sol.optimal = sol.lower_bound >= sol.cost;
+  sol.stats.seconds = clock.seconds();
+  return sol;
+}
+
+}  // namespace rstruct::setcover

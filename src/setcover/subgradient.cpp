@@ -1,0 +1,177 @@
+#include "subgradient.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "greedy.hpp"
+
+namespace rstruct::setcover::detail {
+
+namespace {
+
+/// Instances with more entries than this run the subgradient on a core (CFT §3).
+constexpr std::int64_t kCoreThreshold = 200'000;
+constexpr std::size_t kCorePerRow = 5;
+constexpr std::int32_t kPriceEvery = 10;
+constexpr std::int32_t kStepWindow = 20;
+
+/// CFT's core: for every row its kCorePerRow columns of smallest reduced cost, plus every
+/// column with reduced cost below a small threshold, plus the incumbent cover.
+std::vector<std::int32_t> build_core(const Instance& inst, const std::vector<double>& reduced,
+                                     std::span<const std::int32_t> cover, double threshold) {
+  std::vector<char> in(static_cast<std::size_t>(inst.num_cols()), 0);
+  std::vector<std::pair<double, std::int32_t>> tmp;
+  for (std::int32_t i = 0; i < inst.num_rows(); ++i) {
+    tmp.clear();
+    for (std::int32_t j : inst.row(i)) tmp.emplace_back(reduced[j], j);
+    const std::size_t k = std::min(kCorePerRow, tmp.size());
+    std::partial_sort(tmp.begin(), tmp.begin() + static_cast<std::ptrdiff_t>(k), tmp.end());
+    for (std::size_t t = 0; t < k; ++t) in[tmp[t].second] = 1;
+  }
+  for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
+    if (reduced[j] < threshold) in[j] = 1;
+  }
+  for (std::int32_t j : cover) in[j] = 1;
+  std::vector<std::int32_t> core;
+  for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
+    if (in[j]) core.push_back(j);
+  }
+  return core;
+}
+
+}  // namespace
+
+double lagrangian_bound(const Instance& inst, std::span<const double> u,
+                        std::vector<double>* reduced) {
+  double bound = 0.0;
+  for (double x : u) bound += x;
+  if (reduced) reduced->resize(static_cast<std::size_t>(inst.num_cols()));
+  for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
+    double r = inst.cost(j);
+    for (std::int32_t i : inst.column(j)) r -= u[i];
+    if (r < 0) bound += r;
+    if (reduced) (*reduced)[j] = r;
+  }
+  return bound;
+}
+
+std::vector<double> initial_multipliers(const Instance& inst) {
+  std::vector<double> u(static_cast<std::size_t>(inst.num_rows()),
+                        std::numeric_limits<double>::infinity());
+  for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
+    const auto rows = inst.column(j);
+    if (rows.empty()) continue;
+    const double v = inst.cost(j) / static_cast<double>(rows.size());
+    for (std::int32_t i : rows) u[i] = std::min(u[i], v);
+  }
+  for (double& x : u) {
+    if (!std::isfinite(x)) x = 0.0;
+  }
+  return u;
+}
+
+bool bound_closes_gap(const Instance& inst, double bound, double cost) {
+  // The floating bound may be slightly off; this only decides when to stop searching.
+  const double slack = 1e-9 * std::max(1.0, std::abs(cost));
+  if (inst.has_integer_costs()) return std::ceil(bound - slack) >= cost;
+  return bound >= cost - slack;
+}
+
+void subgradient(const Instance& inst, LagrangianState& state, const SubgradientOptions& options,
+                 const Stopwatch& clock) {
+  const std::size_t m = static_cast<std::size_t>(inst.num_rows());
+  const bool use_core = inst.num_entries() > kCoreThreshold;
+  double min_cost = std::numeric_limits<double>::infinity();
+  for (double c : inst.costs()) min_cost = std::min(min_cost, c);
+  std::vector<double> reduced;
+  std::vector<double> u = state.u;
+  std::vector<std::int32_t> core;
+  std::vector<char> core_mask;
+  auto price = [&]() {
+    const double full = lagrangian_bound(inst, u, &reduced);
+    if (full > state.bound) {
+      state.bound = full;
+      state.u = u;
+    }
+    if (use_core) {
+      core = build_core(inst, reduced, state.cover, 0.1 * min_cost);
+      core_mask.assign(static_cast<std::size_t>(inst.num_cols()), 0);
+      for (std::int32_t j : core) core_mask[j] = 1;
+    }
+  };
+  if (!use_core) {
+    core.resize(static_cast<std::size_t>(inst.num_cols()));
+    for (std::int32_t j = 0; j < inst.num_cols(); ++j) core[j] = j;
+  }
+  price();
+  double lambda = 0.1;
+  double window_max = -std::numeric_limits<double>::infinity();
+  double window_min = std::numeric_limits<double>::infinity();
+  double previous_window_max = -std::numeric_limits<double>::infinity();
+  std::vector<double> s(m);
+  const std::int32_t heuristic_every = std::max(10, options.max_iterations / 25);
+  double last_best = state.bound;
+  std::int32_t stall = 0;
+  for (std::int32_t it = 1; it <= options.max_iterations; ++it) {
+    ++state.iterations;
+    if (bound_closes_gap(inst, state.bound, state.cover_cost)) break;
+    if ((it & 7) == 0 && clock.seconds() > options.deadline) break;
+    double value = 0.0;
+    for (double x : u) value += x;
+    std::fill(s.begin(), s.end(), 1.0);
+    for (std::int32_t j : core) {
+      double r = inst.cost(j);
+      for (std::int32_t i : inst.column(j)) r -= u[i];
+      if (r < 0) {
+        value += r;
+        for (std::int32_t i : inst.column(j)) s[i] -= 1.0;
+      }
+    }
+    if (!use_core && value > state.bound) {
+      state.bound = value;
+      state.u = u;
+    }
+    double norm = 0.0;
+    for (std::size_t i = 0; i < m; ++i) {
+      if (u[i] <= 0.0 && s[i] < 0.0) s[i] = 0.0;  // projected subgradient
+      norm += s[i] * s[i];
+    }
+    if (norm == 0.0) break;  // the Lagrangian solution is an optimal cover of the core
+    window_max = std::max(window_max, value);
+    window_min = std::min(window_min, value);
+    if (it % kStepWindow == 0) {
+      const double spread = (window_max - window_min) / std::max(1e-12, std::abs(window_max));
+      // CFT's rule, plus: a window whose last value is its maximum is steady progress, not
+      // oscillation, so the step may grow.
+      // A window that does not beat the previous one's maximum is stalling (often a
+      // two-cycle), so the step shrinks.
+      if (spread > 0.01 || window_max <= previous_window_max) lambda /= 2.0;
+      else if (spread < 0.001 || value >= window_max) lambda *= 1.5;
+      previous_window_max = window_max;
+      window_max = -std::numeric_limits<double>::infinity();
+      window_min = std::numeric_limits<double>::infinity();
+    }
+    const double target_gap = std::max(state.cover_cost - value, 1e-3 * std::max(1.0, state.cover_cost));
+    const double step = lambda * target_gap / norm;
+    for (std::size_t i = 0; i < m; ++i) u[i] = std::max(0.0, u[i] + step * s[i]);
+    if (use_core && it % kPriceEvery == 0) price();
+    if (options.run_heuristics && it % heuristic_every == 0) {
+      ++state.heuristic_calls;
+      auto cover = greedy_cover(inst, u, use_core ? std::span<const char>(core_mask) : std::span<const char>{});
+      const double cost = inst.cost_of(cover);
+      if (cost < state.cover_cost) {
+        state.cover = std::move(cover);
+        state.cover_cost = cost;
+      }
+    }
+    if (it % 100 == 0) {
+      stall = state.bound > last_best + 1e-4 * std::max(1.0, std::abs(last_best)) ? 0 : stall + 1;
+      last_best = state.bound;
+      if (stall >= 30 || lambda < 1e-6) break;
+    }
+  }
+  if (use_core) price();
+}
+
+}  // namespace rstruct::setcover::detail

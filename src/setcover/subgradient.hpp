@@ -1,0 +1,49 @@
+#pragma once
+// Lagrangian relaxation of set cover (Beasley 1990; Caprara, Fischetti, Toth 1999, "CFT"):
+// for multipliers u >= 0, L(u) = Σ_i u_i + Σ_j min(0, c_j − Σ_{i∈S_j} u_i) is a lower bound.
+// Subgradient optimisation on a core of columns with periodic re-pricing over all columns,
+// with CFT's step-size control and Lagrangian greedy heuristics along the way.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "rstruct/core/stopwatch.hpp"
+#include "rstruct/setcover/instance.hpp"
+
+namespace rstruct::setcover::detail {
+
+/// L(u) over every column of `inst`, in floating point (the certified value is recomputed
+/// exactly elsewhere). Fills `reduced` (size num_cols) with c_j − Σ_{i∈S_j} u_i if non-null.
+double lagrangian_bound(const Instance& inst, std::span<const double> u,
+                        std::vector<double>* reduced = nullptr);
+
+struct SubgradientOptions {
+  std::int32_t max_iterations = 2000;
+  double deadline = 1.0;  ///< seconds on `clock` after which to stop
+  bool run_heuristics = true;
+};
+
+/// State shared with the caller: best multipliers (with a bound valid over all columns)
+/// and best cover found so far (improved by the Lagrangian greedy).
+struct LagrangianState {
+  std::vector<double> u;
+  double bound = 0.0;
+  std::vector<std::int32_t> cover;
+  double cover_cost = 0.0;
+  std::int64_t iterations = 0;
+  std::int64_t heuristic_calls = 0;
+};
+
+/// Initial multipliers u_i = min_{j ∋ i} c_j / |S_j|.
+std::vector<double> initial_multipliers(const Instance& inst);
+
+/// True when `bound` proves `cost` optimal (integer costs: ⌈bound⌉ >= cost).
+bool bound_closes_gap(const Instance& inst, double bound, double cost);
+
+/// Runs subgradient optimisation from state.u, updating state in place.
+/// \pre state.cover is a cover of inst with cost state.cover_cost.
+void subgradient(const Instance& inst, LagrangianState& state, const SubgradientOptions& options,
+                 const Stopwatch& clock);
+
+}  // namespace rstruct::setcover::detail

@@ -1,0 +1,135 @@
+// Poles from a tetrahedron soup (hand-made configurations) and the circumsphere construction.
+
+#include "rstruct/poles/pole_set.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <gmpxx.h>
+#include <random>
+#include <vector>
+
+#include "poles/circumsphere.hpp"
+#include "rstruct/core/error.hpp"
+
+using rstruct::Point3;
+using rstruct::poles::compute_poles;
+using rstruct::poles::kNoPole;
+using rstruct::poles::PoleSet;
+using rstruct::poles::TetrahedronSoup;
+using Tet = std::array<std::uint32_t, 4>;
+
+namespace {
+
+/// Sample 0 at the origin; vertex k·i (i = 1..3) at ±k times a unit vector. The tetrahedron
+/// (0, k·e1, k·e2, k·e3) has circumcentre (k/2)(1, 1, 1).
+struct Star {
+  std::vector<Point3> vertices{{0, 0, 0}};
+  std::vector<Tet> tets;
+  std::uint32_t add(const Point3& p) {
+    vertices.push_back(p);
+    return static_cast<std::uint32_t>(vertices.size() - 1);
+  }
+  void add_corner_tet(double k) {
+    const auto a = add({k, 0, 0}), b = add({0, k, 0}), c = add({0, 0, k});
+    tets.push_back({0, a, b, c});
+  }
+};
+
+}  // namespace
+
+TEST_CASE("first pole is the largest incident circumball, second the largest opposite one") {
+  Star star;
+  star.add_corner_tet(2);   // centre (1, 1, 1)
+  star.add_corner_tet(-2);  // centre (−1, −1, −1)
+  star.add_corner_tet(4);   // centre (2, 2, 2): the farthest, p⁺
+  star.add_corner_tet(-1);  // centre (−.5, −.5, −.5): opposite but nearer
+  const TetrahedronSoup soup{star.vertices, 1, star.tets, {}};
+  const PoleSet poles = compute_poles(soup);
+  REQUIRE(poles.is_valid());
+  REQUIRE(poles.size() == 2);  // only tetrahedra that are somebody's pole become poles
+  const auto [first, second] = poles.sample_poles[0];
+  REQUIRE(first != kNoPole);
+  REQUIRE(second != kNoPole);
+  CHECK(poles.tet[first] == 2);
+  CHECK(poles.tet[second] == 1);
+  CHECK(poles.centre[first] == Point3{2, 2, 2});
+  CHECK(poles.centre[second] == Point3{-1, -1, -1});
+  CHECK(poles.radius[first] == Approx(std::sqrt(12.0)).epsilon(1e-15));
+  CHECK(poles.owner[first] == 0);
+  CHECK(poles.is_box_pole(first));  // its other vertices are extra sites (index >= 1)
+}
+
+TEST_CASE("a sample with no vertex beyond its first pole has no second pole") {
+  Star star;
+  star.add_corner_tet(2);
+  star.add_corner_tet(3);
+  const PoleSet poles = compute_poles({star.vertices, 1, star.tets, {}});
+  REQUIRE(poles.is_valid());
+  CHECK(poles.sample_poles[0][0] != kNoPole);
+  CHECK(poles.sample_poles[0][1] == kNoPole);
+}
+
+TEST_CASE("a pole shared by several samples is stored once; duplicates share poles") {
+  // Four samples forming one tetrahedron; each sample's only incident cell is that one.
+  const std::vector<Point3> vertices = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 0, 2}, {0, 0, 0}};
+  const std::vector<Tet> tets = {{0, 1, 2, 3}};
+  const std::vector<std::uint32_t> representative = {0, 1, 2, 3, 0};
+  const PoleSet poles = compute_poles({vertices, 5, tets, representative});
+  REQUIRE(poles.is_valid());
+  REQUIRE(poles.size() == 1);
+  for (std::uint32_t s = 0; s < 5; ++s) CHECK(poles.sample_poles[s][0] == 0);
+  CHECK(poles.sample_poles[4] == poles.sample_poles[0]);
+  CHECK(poles.owner[0] == 0);
+  CHECK(poles.representative[4] == 0);
+}
+
+TEST_CASE("box sites get no poles, and poles touching them are box poles") {
+  const std::vector<Point3> vertices = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 0, 2}};
+  const std::vector<Tet> tets = {{0, 1, 2, 3}};
+  const PoleSet poles = compute_poles({vertices, 2, tets, {}});  // vertices 2, 3 are sites
+  REQUIRE(poles.is_valid());
+  CHECK(poles.sample_poles.size() == 2);
+  CHECK(poles.is_box_pole(0));
+}
+
+TEST_CASE("soup errors") {
+  const std::vector<Point3> vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const std::vector<Tet> bad = {{0, 1, 2, 7}};
+  CHECK_THROWS_AS(compute_poles({vertices, 4, bad, {}}), rstruct::InvalidInput);
+  const std::vector<Tet> good = {{0, 1, 2, 3}};
+  CHECK_THROWS_AS(compute_poles({vertices, 5, good, {}}), rstruct::InvalidInput);
+  const std::vector<std::uint32_t> rep = {1, 2, 2, 3};  // 0 → 1, but 1 is not its own
+  CHECK_THROWS_AS(compute_poles({vertices, 4, good, rep}), rstruct::InvalidInput);
+  const std::vector<Point3> flat = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  CHECK_THROWS_AS(compute_poles({flat, 4, good, {}}), rstruct::InternalError);
+}
+
+TEST_CASE("circumsphere centres are equidistant from the four vertices, slivers included") {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const double offset = trial % 2 == 0 ? 0.0 : 1e6;
+    Point3 p[4];
+    for (auto& q : p) q = {offset + u(rng), offset + u(rng), u(rng)};
+    if (trial % 4 >= 2) p[3].z = p[0].z + 1e-13 * u(rng);  // nearly flat: exact path
+    if (trial % 4 >= 2) { p[1].z = p[0].z; p[2].z = p[0].z; }
+    if (p[3].z == p[0].z) continue;  // exactly flat
+    const auto cs = rstruct::poles::detail::circumsphere(p[0], p[1], p[2], p[3]);
+    // Measure |c − p_i|² − |c − p_0|² exactly for the rounded centre c = p0 + offset.
+    mpq_class c[3];
+    for (int i = 0; i < 3; ++i) c[i] = mpq_class(p[0][i]) + mpq_class(cs.offset[i]);
+    auto d2 = [&](const Point3& q) {
+      mpq_class s = 0;
+      for (int i = 0; i < 3; ++i) s += (c[i] - q[i]) * (c[i] - q[i]);
+      return s;
+    };
+    const mpq_class r2 = d2(p[0]);
+    for (int i = 1; i < 4; ++i) {
+      const double rel = std::fabs(mpq_class(d2(p[i]) - r2).get_d()) / r2.get_d();
+      INFO("trial " << trial << " vertex " << i);
+      // Rounding the centre to doubles moves each distance by about ulp(|c|)·R.
+      const double ulp_c = std::ldexp(1.0, std::ilogb(std::fabs(offset) + std::sqrt(r2.get_d())) - 52);
+      CHECK(rel <= 1e-6 + 8 * ulp_c / std::sqrt(r2.get_d()));
+    }
+  }
+}

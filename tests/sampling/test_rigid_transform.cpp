@@ -1,0 +1,111 @@
+// Rigid transforms and transformed surfaces: everything moves consistently, also far from
+// the origin.
+#include "rstruct/sampling/rigid_transform.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <rapidcheck/catch.h>
+
+#include "rstruct/core/error.hpp"
+#include "rstruct/sampling/ellipsoid.hpp"
+#include "rstruct/sampling/torus.hpp"
+#include "rstruct/sampling/uniform_sampling.hpp"
+
+using namespace rstruct;
+using namespace rstruct::sampling;
+
+namespace {
+
+double det3(const std::array<double, 9>& q) {
+  return q[0] * (q[4] * q[8] - q[5] * q[7]) - q[1] * (q[3] * q[8] - q[5] * q[6]) +
+         q[2] * (q[3] * q[7] - q[4] * q[6]);
+}
+
+}  // namespace
+
+TEST_CASE("random rotations are rotations and deterministic") {
+  rc::prop("orthogonal with determinant 1", [](std::uint64_t seed) {
+    Random a(seed), b(seed);
+    const RigidTransform q = RigidTransform::random_rotation(a);
+    const RigidTransform r = RigidTransform::random_rotation(b);
+    RC_ASSERT(q.q == r.q);
+    // Each entry of Q carries at most ~8 roundings (normalisation, products, sums), so
+    // the entries of QᵀQ − I stay below about 20·2⁻⁵³ ≈ 2.2e-15.
+    RC_ASSERT(q.orthogonality_defect() <= 20 * 0x1.0p-53);
+    // det Q = 1 + O(defect), plus det3's own ~12 roundings of terms of size ≤ 1.
+    RC_ASSERT(std::fabs(det3(q.q) - 1.0) <= 32 * 0x1.0p-53);
+    const Vec3 v{0.3, -1.2, 2.0};
+    RC_ASSERT(norm(q.apply_inverse(q.apply(v)) - v) <= 1e-14);
+  });
+}
+
+TEST_CASE("random rotations are spread uniformly") {
+  // For Haar-distributed Q, Q e_z is uniform on the sphere: its mean is 0 and the mean of
+  // z² is 1/3 (tolerances are about 5 standard deviations for 20000 draws).
+  Random random(2024);
+  Vec3 mean{};
+  double z2 = 0;
+  const int n = 20000;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 v = RigidTransform::random_rotation(random).rotate({0, 0, 1});
+    mean += v / n;
+    z2 += v.z * v.z / n;
+  }
+  CHECK(norm(mean) < 5 * std::sqrt(1.0 / (3.0 * n)) * std::sqrt(3.0));
+  CHECK(std::fabs(z2 - 1.0 / 3.0) < 5 * std::sqrt(4.0 / 45.0 / n));
+}
+
+TEST_CASE("transformed surfaces move value, normal, closest point, lfs and medial points") {
+  Random random(77);
+  const auto base = std::make_shared<Ellipsoid>(3, 2, 1);
+  for (double shift : {0.0, 10.0, 1e6}) {
+    RigidTransform t = RigidTransform::random_rotation(random);
+    t.t = {shift, -0.5 * shift, 0.25 * shift};
+    TransformedSurface moved(base, t);
+    const double tol = 1e-12 * (1.0 + shift);
+    for (const Point3& p : sample_uniform(*base, 200, 4)) {
+      const Point3 x = t.apply(p);
+      REQUIRE(std::fabs(moved.value(x)) <= 1e-9 + 10 * tol);
+      REQUIRE(norm(moved.normal(x) - t.rotate(base->normal(p))) <= 1e-9 + tol);
+      REQUIRE(moved.lfs(x) == Approx(base->lfs(p)).margin(10 * tol));
+      const Point3 m = *moved.nearest_inner_medial_point(x);
+      REQUIRE(norm(m - t.apply(*base->nearest_inner_medial_point(p))) <= 10 * tol);
+      const Point3 y = x + t.rotate(base->normal(p)) * 0.2;
+      REQUIRE(norm(moved.closest_point(y) - x) <= 1e-9 + 10 * tol);
+      // Charts move too; area elements do not change.
+      REQUIRE(norm(moved.point(0, 0.1, 0.2) - t.apply(base->point(0, 0.1, 0.2))) == 0.0);
+    }
+    CHECK_FALSE(moved.nearest_outer_medial_point(t.t).has_value());
+    CHECK(moved.area() == base->area());
+    // The pad is at the level of coordinate rounding: a few ulps of |t| and the extent.
+    CHECK(moved.rounding_pad() <= 0x1.0p-46 * (10.0 + 2.0 * norm(t.t)));
+    const Box3 box = moved.bounding_box();
+    for (const Point3& p : sample_uniform(moved, 100, 5)) {
+      REQUIRE(p.x >= box.lo.x);
+      REQUIRE(p.z <= box.hi.z);
+    }
+  }
+}
+
+TEST_CASE("torus moved: the outer medial axis is the moved symmetry axis") {
+  const auto base = std::make_shared<Torus>(3.0, 1.0);
+  Random random(8);
+  RigidTransform t = RigidTransform::random_rotation(random);
+  t.t = {1, 2, 3};
+  TransformedSurface moved(base, t);
+  const Point3 x = t.apply({4, 0, 0});
+  const Point3 m = *moved.nearest_outer_medial_point(x);
+  CHECK(norm(m - t.t) <= 1e-14 * 10);
+  CHECK(moved.lfs(x) == Approx(1.0));
+}
+
+TEST_CASE("transformed surfaces reject bad transforms") {
+  const auto base = std::make_shared<Torus>(3.0, 1.0);
+  RigidTransform t;
+  t.q[0] = 2.0;
+  CHECK_THROWS_AS(TransformedSurface(base, t), InvalidInput);
+  t = RigidTransform::translation({NAN, 0, 0});
+  CHECK_THROWS_AS(TransformedSurface(base, t), InvalidInput);
+  CHECK_THROWS_AS(TransformedSurface(nullptr, RigidTransform{}), InvalidInput);
+  CHECK_THROWS_AS(RigidTransform::from_quaternion(0, 0, 0, 0), InvalidInput);
+}
