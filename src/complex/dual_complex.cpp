@@ -5,6 +5,7 @@
 #include "rstruct/complex/coface_index.hpp"
 #include "rstruct/complex/orthosphere_predicates.hpp"
 #include "rstruct/core/error.hpp"
+#include "rstruct/triangulation/regular_triangulation_3.hpp"
 
 namespace rstruct::complex {
 namespace {
@@ -126,6 +127,18 @@ DualComplex dual_complex(std::span<const WeightedPoint> points,
   Classifier(points, k).run();
   classify_facets(k);
   return k;
+}
+
+DualComplex dual_complex(const triangulation::RegularTriangulation3& triangulation) {
+  std::vector<WeightedPoint> points(triangulation.number_of_points());
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    points[v] = triangulation.weighted_point(static_cast<triangulation::VertexId>(v));
+  }
+  std::vector<Tetrahedron> cells;
+  cells.reserve(triangulation.number_of_finite_cells());
+  triangulation.for_each_finite_cell(
+      [&](triangulation::CellId c) { cells.push_back(triangulation.vertices(c)); });
+  return dual_complex(points, cells);
 }
 
 }  // namespace rstruct::complex

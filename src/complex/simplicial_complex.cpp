@@ -36,12 +36,46 @@ std::array<VertexId, K> normalized(std::array<VertexId, K> s, std::size_t positi
   return s;
 }
 
+/// Sorts records lexicographically by key(record) (a vertex tuple): a counting sort on the
+/// first vertex, then a comparison sort inside each bucket (buckets are small: the
+/// simplices sharing their lowest vertex). Falls back to one comparison sort when the ids
+/// are too sparse for the counting array.
+template <class Record, class KeyOf>
+void sort_by_key(std::vector<Record>& records, KeyOf key) {
+  const auto less = [&key](const Record& a, const Record& b) { return key(a) < key(b); };
+  if (records.size() < 64) {
+    std::sort(records.begin(), records.end(), less);
+    return;
+  }
+  VertexId max_first = 0;
+  for (const auto& r : records) max_first = std::max(max_first, key(r)[0]);
+  if (max_first > 4 * records.size()) {
+    std::sort(records.begin(), records.end(), less);
+    return;
+  }
+  std::vector<std::size_t> start(static_cast<std::size_t>(max_first) + 2, 0);
+  for (const auto& r : records) ++start[key(r)[0] + 1];
+  for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
+  std::vector<Record> out(records.size());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (const auto& r : records) out[fill[key(r)[0]]++] = r;
+  for (std::size_t b = 0; b + 1 < start.size(); ++b) {
+    if (start[b + 1] - start[b] > 1) {
+      std::sort(out.begin() + static_cast<std::ptrdiff_t>(start[b]),
+                out.begin() + static_cast<std::ptrdiff_t>(start[b + 1]), less);
+    }
+  }
+  records.swap(out);
+}
+
 template <std::size_t K>
 std::vector<std::array<VertexId, K>> normalized_unique(
     const std::vector<std::array<VertexId, K>>& in) {
   std::vector<std::array<VertexId, K>> out(in.size());
   for (std::size_t i = 0; i < in.size(); ++i) out[i] = normalized(in[i], i);
-  std::sort(out.begin(), out.end());
+  sort_by_key(out, [](const std::array<VertexId, K>& s) -> const std::array<VertexId, K>& {
+    return s;
+  });
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
@@ -75,8 +109,9 @@ std::vector<std::array<VertexId, K>> faces_with_incidence(
     for (std::size_t i = 0; i <= K; ++i) records.push_back({without(cofaces[c], i), c * (K + 1) + i});
   }
   for (const auto& s : listed) records.push_back({s, kNoRef});
-  std::sort(records.begin(), records.end(),
-            [](const FaceRecord<K>& a, const FaceRecord<K>& b) { return a.key < b.key; });
+  sort_by_key(records, [](const FaceRecord<K>& r) -> const std::array<VertexId, K>& {
+    return r.key;
+  });
   std::vector<std::array<VertexId, K>> faces;
   coface_faces.assign(cofaces.size(), {});
   for (const auto& r : records) {

@@ -112,42 +112,45 @@ inline std::vector<Tetrahedron> brute_force_regular_cells(const std::vector<QPoi
   return cells;
 }
 
-/// Brute-force test of σ ∈ K: the minimum of π_σ over V_σ = {x : π_σ(x) ≤ π_q(x) ∀q},
-/// found among the candidates z_{σ ∪ A} for every set A of other points with σ ∪ A
-/// affinely independent (the minimiser over a polyhedron is the minimiser over the affine
-/// hull of some face, cut out by such an A), is ≤ 0. Returns nullopt if V_σ is empty.
-inline std::optional<bool> brute_force_in_k(const std::vector<QPoint>& pts,
-                                            const std::vector<VertexId>& sigma) {
+/// Brute-force test of σ ∈ K: is the minimum of π_σ over V_σ = {x : π_σ(x) ≤ π_q(x) ∀q}
+/// at most 0? That minimum is attained at the minimiser of π_σ over the affine hull of
+/// some face of V_σ, cut out by a set A of other points with σ ∪ A affinely independent:
+/// the point z_{σ ∪ A}. So σ ∈ K iff some z_{σ ∪ A} (|A| ≤ 3 − dim σ) has π_σ ≤ 0 and lies
+/// in V_σ (checked against every other point).
+inline bool brute_force_in_k(const std::vector<QPoint>& pts, const std::vector<VertexId>& sigma) {
   std::vector<VertexId> others;
   for (VertexId q = 0; q < pts.size(); ++q) {
     if (std::find(sigma.begin(), sigma.end(), q) == sigma.end()) others.push_back(q);
   }
-  std::optional<Q> best;
   const std::size_t max_extra = 4 - sigma.size();
   std::vector<VertexId> chosen;
-  // Enumerate subsets of `others` of size ≤ max_extra.
-  const auto visit = [&](const auto& self, std::size_t start) -> void {
+  const auto visit = [&](const auto& self, std::size_t start) -> bool {
     std::vector<QPoint> s;
     for (const VertexId v : sigma) s.push_back(pts[v]);
     for (const VertexId v : chosen) s.push_back(pts[v]);
     if (const auto z = orthocenter(s)) {
       const Q value = power(*z, pts[sigma[0]]);
-      bool feasible = true;
-      for (const VertexId q : others) {
-        if (power(*z, pts[q]) < value) feasible = false;
+      if (sgn(value) <= 0) {
+        bool feasible = true;
+        for (const VertexId q : others) {
+          if (power(*z, pts[q]) < value) {
+            feasible = false;
+            break;
+          }
+        }
+        if (feasible) return true;
       }
-      if (feasible && (!best || value < *best)) best = value;
     }
-    if (chosen.size() == max_extra) return;
+    if (chosen.size() == max_extra) return false;
     for (std::size_t i = start; i < others.size(); ++i) {
       chosen.push_back(others[i]);
-      self(self, i + 1);
+      const bool found = self(self, i + 1);
       chosen.pop_back();
+      if (found) return true;
     }
+    return false;
   };
-  visit(visit, 0);
-  if (!best) return std::nullopt;
-  return sgn(*best) <= 0;
+  return visit(visit, 0);
 }
 
 }  // namespace rstruct::complex::testing

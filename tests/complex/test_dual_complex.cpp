@@ -9,6 +9,7 @@
 #include "complex/rational_geometry.hpp"
 #include "rstruct/complex/homology.hpp"
 #include "rstruct/core/error.hpp"
+#include "rstruct/triangulation/regular_triangulation_3.hpp"
 
 using namespace rstruct;
 using namespace rstruct::complex;
@@ -34,9 +35,7 @@ bool triangulate(BallSet& set) {
 void check_against_brute_force(const BallSet& set, const DualComplex& k) {
   const auto& r = k.triangulation;
   const auto expect = [&](int d, SimplexIndex i, std::vector<VertexId> sigma) {
-    const auto in = testing::brute_force_in_k(set.exact, sigma);
-    RC_ASSERT(in.has_value());  // V_σ is never empty for a simplex of R
-    RC_ASSERT(k.in_k[d][i] == *in);
+    RC_ASSERT(k.in_k[d][i] == testing::brute_force_in_k(set.exact, sigma));
   };
   for (SimplexIndex i = 0; i < r.size(0); ++i) expect(0, i, {r.vertices()[i]});
   for (SimplexIndex i = 0; i < r.size(1); ++i) {
@@ -147,4 +146,61 @@ TEST_CASE("dual complex agrees with the brute-force definition on random ball se
       RC_CLASSIFY(counts[1] < k.triangulation.size(1), "an edge of R not in K");
     });
   }
+}
+
+namespace {
+
+/// R from the real triangulation (exact, perturbed); no general-position requirement.
+DualComplex dual_complex_via_triangulation(BallSet& set) {
+  std::vector<Point3> centres;
+  std::vector<double> weights;
+  for (const auto& p : set.points) {
+    centres.push_back(p.c);
+    weights.push_back(p.w);
+  }
+  const triangulation::RegularTriangulation3 r(centres, weights);
+  set.exact.clear();
+  for (const auto& p : set.points) set.exact.push_back(testing::to_q(p));
+  return dual_complex(r);
+}
+
+}  // namespace
+
+TEST_CASE("dual complex on the regular triangulation agrees with brute force") {
+  rc::prop("general position", [] {
+    const int n = *rc::gen::inRange(4, 9);
+    BallSet set;
+    for (int i = 0; i < n; ++i) {
+      const auto coord = [] { return *rc::gen::inRange(-1000000, 1000000) / 400000.0; };
+      const double r = *rc::gen::inRange(100, 1000) / 600.0;
+      set.points.push_back({{coord(), coord(), coord()}, r * r});
+    }
+    // Four small far balls so that the centres always span R³.
+    set.points.push_back({{-3.1, -2.9, -3.3}, 0.25});
+    set.points.push_back({{3.2, -3.05, -2.7}, 0.25});
+    set.points.push_back({{-2.8, 3.3, -3.1}, 0.25});
+    set.points.push_back({{-3.3, -3.2, 2.9}, 0.25});
+    const auto k = dual_complex_via_triangulation(set);
+    check_against_brute_force(set, k);
+  });
+  rc::prop("degenerate: integer grid points, equal or integer weights, duplicates", [] {
+    // Points of the 3 × 3 × 3 grid (cospherical and coplanar subsets everywhere), some
+    // repeated, with weights from {0, 1, 2, 4} (touching and nested balls).
+    const int n = *rc::gen::inRange(4, 9);
+    const bool equal = *rc::gen::arbitrary<bool>();
+    BallSet set;
+    for (int i = 0; i < n; ++i) {
+      const double x = *rc::gen::inRange(0, 3);
+      const double y = *rc::gen::inRange(0, 3);
+      const double z = *rc::gen::inRange(0, 3);
+      const double w = equal ? 1.0 : static_cast<double>(*rc::gen::elementOf(std::vector<int>{0, 1, 2, 4}));
+      set.points.push_back({{x, y, z}, w});
+    }
+    set.points.push_back({{0, 0, 0}, 1.0});
+    set.points.push_back({{2, 0, 0}, 1.0});
+    set.points.push_back({{0, 2, 0}, 1.0});
+    set.points.push_back({{0, 0, 2}, 1.0});  // never all coplanar
+    const auto k = dual_complex_via_triangulation(set);
+    check_against_brute_force(set, k);
+  });
 }

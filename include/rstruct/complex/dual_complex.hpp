@@ -62,4 +62,8 @@ struct DualComplex {
 DualComplex dual_complex(std::span<const WeightedPoint> points,
                          std::span<const Tetrahedron> cells);
 
+/// K of the weighted points of a regular triangulation (its finite cells and its input
+/// points with their weights; hidden and merged points are in no cell).
+DualComplex dual_complex(const triangulation::RegularTriangulation3& triangulation);
+
 }  // namespace rstruct::complex
