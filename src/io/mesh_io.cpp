@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "io/formats.hpp"
+#include "io/text_lines.hpp"
 #include "rstruct/core/atomic_file.hpp"
 #include "rstruct/core/error.hpp"
 
@@ -47,19 +48,14 @@ Format resolve(Format format, const std::filesystem::path& path) {
   return format == Format::automatic ? format_from_extension(path) : format;
 }
 
-bool is_ply_token(const std::string& name) {
-  if (name.empty()) return false;
-  return std::all_of(name.begin(), name.end(),
-                     [](unsigned char c) { return c > 0x20 && c < 0x7f; });
-}
-
 void validate_properties(const TriangleMesh& mesh) {
   const auto& props = mesh.vertex_properties;
   for (std::size_t k = 0; k < props.size(); ++k) {
     const std::string& name = props[k].first;
-    if (!is_ply_token(name) || name == "x" || name == "y" || name == "z") {
+    if (!detail::is_ply_name(name) || name == "x" || name == "y" || name == "z") {
       throw InvalidInput("cannot write vertex property named '" + name +
-                         "': names must be non-empty printable words other than x, y, z");
+                         "': names must be non-empty, without blanks or control characters, "
+                         "and not x, y, z");
     }
     for (std::size_t j = 0; j < k; ++j) {
       if (props[j].first == name) throw InvalidInput("duplicate vertex property '" + name + "'");

@@ -40,8 +40,7 @@ OffCounts read_counts(LineReader& lines) {
   std::string_view token;
   tokens.next(token);
   const bool is_number = (token[0] >= '0' && token[0] <= '9') || token[0] == '+' || token[0] == '-';
-  if (!is_number) {
-    if (!is_off_keyword(token, lines)) lines.fail("not an OFF file: found " + quoted(token));
+  if (is_off_keyword(token, lines)) {
     if (tokens.count_left() == 0) {  // counts on the next content line
       if (!lines.next_content(line, '#')) lines.fail("missing the counts line 'nv nf ne'");
       tokens = Tokens(line);
@@ -52,6 +51,8 @@ OffCounts read_counts(LineReader& lines) {
       if (word == "BINARY") lines.fail("binary OFF is not supported");
     }
     if (!tokens.next(token)) lines.fail("missing the counts line 'nv nf ne'");
+  } else if (!is_number) {
+    lines.fail("not an OFF file: found " + quoted(token));
   }
   const std::size_t rest = tokens.count_left();
   if (rest < 1 || rest > 2) lines.fail("counts line must be 'nv nf' or 'nv nf ne'");

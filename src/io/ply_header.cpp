@@ -64,6 +64,7 @@ void parse_element_line(Tokens tokens, PlyHeader& header, const LineReader& wher
   for (const PlyElement& e : header.elements) {
     if (e.name == name) where.fail("duplicate element " + quoted(name));
   }
+  if (!is_ply_name(name)) where.fail("invalid element name " + quoted(name));
   PlyElement element;
   element.name = std::string(name);
   element.count = static_cast<std::uint64_t>(
@@ -99,6 +100,7 @@ void parse_property_line(Tokens tokens, PlyHeader& header, const LineReader& whe
   if (element.find(name) >= 0) {
     where.fail("duplicate property " + quoted(name) + " in element " + quoted(element.name));
   }
+  if (!is_ply_name(name)) where.fail("invalid property name " + quoted(name));
   property.name = std::string(name);
   element.properties.push_back(std::move(property));
 }

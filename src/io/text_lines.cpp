@@ -9,6 +9,15 @@
 
 namespace rstruct::io::detail {
 
+bool is_ply_name(std::string_view name) {
+  if (name.empty()) return false;
+  for (char ch : name) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c <= 0x20 || c == 0x7f) return false;
+  }
+  return true;
+}
+
 std::string quoted(std::string_view bytes) {
   constexpr std::size_t kMaxShown = 40;
   std::string out = "'";

@@ -9,6 +9,10 @@
 
 namespace rstruct::io::detail {
 
+/// True if every byte of `name` may appear in a PLY element or property name: no blanks,
+/// no control characters (the reader and the writer apply the same rule).
+bool is_ply_name(std::string_view name);
+
 /// Printable, length-limited rendering of untrusted bytes for error messages.
 std::string quoted(std::string_view bytes);
 

@@ -18,14 +18,30 @@
 ///    is negative (e is "in conflict": e's power cell would cut the cell), for positively
 ///    oriented a, b, c, d. With all weights zero it equals insphere.
 ///
-/// Symbolic perturbation: the *_sos variants take a distinct integer id per point
-/// (its index in the input) and decide as if weight w_i were perturbed by ε^(n−id)
-/// (smaller id = larger perturbation), following Devillers & Teillaud, "Perturbations for
-/// Delaunay and weighted Delaunay 3D triangulations", CGTA 44 (2011). They never return
-/// zero when their precondition holds. orient3d itself is never perturbed: four coplanar
-/// points give zero, and the triangulation treats such a (flat) tetrahedron as never
-/// created (its conflict tests only call power tests on non-flat cells; coplanar
-/// hull-facet cases use the coplanar_* predicates).
+/// Symbolic perturbation (Devillers & Teillaud, "Perturbations for Delaunay and weighted
+/// Delaunay 3D triangulations", CGTA 44 (2011), weight perturbation): the *_sos variants
+/// take a distinct integer id per point (its index in the input) and decide as if every
+/// weight w_i were replaced by w_i + ε^(id_i + 1) for an infinitesimal ε > 0 (so a smaller
+/// id means a larger perturbation). This is one global perturbation of the input, so all
+/// perturbed answers are mutually consistent (they are the exact answers for the perturbed
+/// input). The lifted determinant is linear in each lifting height, hence the perturbed
+/// sign is: the unperturbed sign if non-zero, else the sign of the cofactor of the point
+/// with the smallest id among those whose cofactor (an orientation of the other points)
+/// is non-zero. The cofactor of the query point e is the orientation of the cell, non-zero
+/// by precondition, so the perturbed predicates never return zero. For Delaunay (all
+/// weights zero) no point of a set of distinct points becomes hidden under it.
+///
+/// Coplanar points: orient3d itself is never perturbed; four coplanar points give zero.
+/// The triangulation never creates a flat cell (its conflict tests call the 3D power tests
+/// only on cells with orient3d > 0). A new point e coplanar with a hull facet abc (the
+/// infinite cell abc∞) is in conflict with that infinite cell iff coplanar_power_test_sos
+/// (a, b, c, e) > 0: the in-plane power test of the same perturbed input, which is the
+/// limit of the 3D test as the fourth point goes to infinity off the plane. In dimension
+/// 1 (all points so far collinear) collinear_power_test_sos plays the same role.
+///
+/// Precondition of every predicate: finite coordinates and weights. A NaN or infinity
+/// throws rstruct::InvalidInput (checked on the slow path only, so a filter that decides
+/// never looks). Counters of how often each stage decides: predicates/counters.hpp.
 
 #include <cstdint>
 
@@ -66,6 +82,39 @@ Sign power_test_sos(const WeightedPoint& a, const WeightedPoint& b, const Weight
 Sign coplanar_power_test_sos(const WeightedPoint& a, const WeightedPoint& b,
                              const WeightedPoint& c, const WeightedPoint& e, std::uint32_t ia,
                              std::uint32_t ib, std::uint32_t ic, std::uint32_t ie);
+
+/// Orientation of d against the plane through a, b, c seen inside that plane, for four
+/// coplanar points: positive iff d lies on the same side of line ab as c, zero iff d is on
+/// line ab, negative otherwise. Independent of any projection. Exact.
+/// \pre a, b, c not collinear; d coplanar with a, b, c.
+Sign coplanar_orientation(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
+
+/// Unperturbed in-plane power test of e against the orthocircle of a, b, c (coplanar):
+/// the sign of −π(e), π(e) = |e − z|² − W − w_e the power of e against the orthocircle
+/// (z, W): positive iff e is in conflict with triangle abc of the plane's 2D regular
+/// triangulation, zero iff e is orthogonal to the orthocircle. Exact.
+/// \pre a, b, c not collinear; e coplanar with them.
+Sign coplanar_power_test(const WeightedPoint& a, const WeightedPoint& b,
+                         const WeightedPoint& c, const WeightedPoint& e);
+
+/// Unperturbed power test of e against the "orthosegment" of two weighted points a, b on a
+/// line through e: positive iff the power of e against every sphere orthogonal to a and
+/// b is negative (e in conflict with the edge ab of the 1D regular triangulation). Exact.
+/// \pre a.c != b.c; e collinear with a, b.
+Sign collinear_power_test(const WeightedPoint& a, const WeightedPoint& b,
+                          const WeightedPoint& e);
+
+/// Perturbed collinear_power_test (same perturbation as power_test_sos).
+/// \pre as collinear_power_test; ids pairwise distinct. Never returns zero.
+Sign collinear_power_test_sos(const WeightedPoint& a, const WeightedPoint& b,
+                              const WeightedPoint& e, std::uint32_t ia, std::uint32_t ib,
+                              std::uint32_t ie);
+
+/// Perturbed comparison of the powers of two weighted points at the same location (the
+/// zero-dimensional power test): positive iff e hides a, i.e. w_e + ε^(ie+1) >
+/// w_a + ε^(ia+1). \pre a.c == e.c, ia != ie. Never returns zero.
+Sign coincident_power_test_sos(const WeightedPoint& a, const WeightedPoint& e,
+                               std::uint32_t ia, std::uint32_t ie);
 
 /// Sign of |x − p|² − |x − q|² (which of p, q is nearer to x). Exact.
 Sign compare_squared_distance(const Point3& x, const Point3& p, const Point3& q);

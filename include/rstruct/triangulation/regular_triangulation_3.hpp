@@ -134,7 +134,8 @@ class RegularTriangulation3 {
   /// Delaunay triangulation of `points` (all weights zero; in-sphere fast path).
   /// \throws InvalidInput if a coordinate is not finite, if there are more than kMaxPoints
   ///   points, or if the points do not span R³ (fewer than 4 affinely independent points,
-  ///   or all coplanar); the message names the case.
+  ///   or all coplanar), or if more than 2^30 cells would be needed (neighbour links are
+  ///   32-bit: about 1.5·10^8 uniform points); the message names the case.
   explicit RegularTriangulation3(std::vector<Point3> points,
                                  const TriangulationOptions& options = {});
 
@@ -299,6 +300,25 @@ class RegularTriangulation3 {
   static constexpr VertexId kFreeMark = 0xFFFFFFFEu;
 
   friend class Builder;
+
+  /// Index (0..3) of the infinite vertex in c, or −1.
+  int infinite_index(CellId c) const {
+    const Cell& k = cells_[c];
+    for (int i = 0; i < 4; ++i) {
+      if (k.v[i] == kInfiniteVertex) return i;
+    }
+    return -1;
+  }
+  /// Sign of orient3d of cell c with its vertex i replaced by q (the other three finite).
+  int orient_replaced(CellId c, int i, const Point3& q) const;
+  /// Remembering stochastic walk from `start` (a live cell) to a cell whose closure contains
+  /// q; an infinite cell iff q is strictly outside the hull. `rng` is the caller's state.
+  CellId walk(const Point3& q, CellId start, std::uint64_t& rng, std::uint64_t& steps) const;
+  /// Some live cell, for walks without a usable hint.
+  CellId any_cell() const;
+  /// Rebuilds vertex_cell_, the counts and the hidden/duplicate reports from the cells and
+  /// the raw hidden records (point, hint cell).
+  void finalize(std::span<const HiddenPoint> raw_hidden);
 
   std::vector<Point3> points_;
   std::vector<double> weights_;

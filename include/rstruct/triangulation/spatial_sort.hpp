@@ -1,0 +1,34 @@
+#pragma once
+/// \file
+/// Spatial sorting for incremental constructions: BRIO (Amenta, Choi & Rote, "Incremental
+/// constructions con BRIO", SoCG 2003) with every round ordered along a 3D Hilbert curve
+/// (Hilbert index computed with Skilling's transpose algorithm, "Programming the Hilbert
+/// curve", AIP Conf. Proc. 707, 2004). The order only affects speed, never a result, so the
+/// quantisation of coordinates to the curve's grid is plain double arithmetic.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "rstruct/geometry/vec3.hpp"
+
+namespace rstruct::triangulation {
+
+/// Hilbert index (63 bits, 21 per axis) of grid cell (x, y, z), each coordinate < 2^21.
+std::uint64_t hilbert_index_3d(std::uint32_t x, std::uint32_t y, std::uint32_t z);
+
+/// The indices 0..n−1 of `points` in Hilbert order (ties broken by index).
+/// \pre every coordinate finite.
+std::vector<std::uint32_t> hilbert_order(std::span<const Point3> points);
+
+/// BRIO order: every index drawn into a random round (a function of `seed` and the index)
+/// with rounds of geometrically growing expected size (the last round holds each index with
+/// probability 1 − 1/ratio_divisor, the round before it the same share of the rest, and so
+/// on down to a first round of expected size at most `min_round`); rounds in order, each
+/// sorted along the Hilbert curve.
+/// \pre every coordinate finite; ratio_divisor >= 2.
+std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint64_t seed,
+                                      std::uint32_t ratio_divisor = 4,
+                                      std::size_t min_round = 256);
+
+}  // namespace rstruct::triangulation

@@ -1,0 +1,66 @@
+#pragma once
+/// \file
+/// Every error constant of the predicates' floating-point filters, in one place.
+/// Each constant is re-derived and checked by proofs/filter_bounds.cpp (run it with
+/// `meson test --suite proofs`), which instantiates the very templates of
+/// polynomials.hpp with an outward-rounded error-tracking number type (MPFI).
+///
+/// Error model (IEEE binary64, round to nearest, -ffp-contract=off): fl(x ± y) =
+/// (x ± y)(1 + δ), fl(x · y) = xy(1 + δ) + η with |δ| ≤ u = 2⁻⁵³ and |η| ≤ 2⁻¹⁰⁷⁵ (η ≠ 0
+/// only on underflow; sums that underflow are exact). The leaves are the computed
+/// differences t̃ = fl(p − q) of inputs (|t − t̃| ≤ u|t|), normalised by the largest
+/// computed |t̃| of their column (m_x, m_y, m_z; m_w for weight differences).
+///
+/// Semi-static filter: with D̃ the computed value and D the exact one, |D̃ − D| ≤ K · S
+/// where S is the product of column maxima named beside each constant, computed in
+/// floating point as written in filters.hpp with `bound_roundings` roundings (each may
+/// lose a factor 1 − u, which K absorbs). The filter decides only when |D̃| > K·S and
+/// every column maximum lies in [2^min_exponent, 2^max_exponent]: below, underflow could
+/// dominate (the proof bounds its share for maxima ≥ 2^min_exponent); above, an
+/// intermediate could overflow.
+
+namespace rstruct::predicates::detail::filter {
+
+/// Guard of one filter: the range of column maxima where its constant holds.
+struct Guard {
+  double min_magnitude;  ///< smallest allowed column maximum m_x, m_y, m_z (> 0)
+  double max_magnitude;  ///< largest allowed column maximum; weights up to its square
+};
+
+/// 2^k as a constant expression.
+constexpr double pow2(int k) {
+  double r = 1;
+  for (; k > 0; --k) r *= 2;
+  for (; k < 0; ++k) r /= 2;
+  return r;
+}
+
+/// Degree ≤ 3 predicates (orient3d, orient2d): maxima in [2^-300, 2^300].
+inline constexpr Guard kGuardDegree3{pow2(-300), pow2(300)};
+/// Degree 4 and 5 predicates (in-sphere, power tests): maxima in [2^-180, 2^200].
+inline constexpr Guard kGuardDegree5{pow2(-180), pow2(200)};
+/// Degree 2 predicates (distance and power comparisons): maxima in [2^-400, 2^400].
+inline constexpr Guard kGuardDegree2{pow2(-400), pow2(400)};
+
+/// orient3d: S = m_x·m_y·m_z, 3 roundings in the bound.
+inline constexpr double kOrient3d = 5.1071e-15;
+/// orient2d in a coordinate plane: S = m_u·m_v, 2 roundings.
+inline constexpr double kOrient2d = 8.8818e-16;
+/// insphere: S = m_x·m_y·m_z·M², M = max(m_x, m_y, m_z), 5 roundings.
+inline constexpr double kInsphere = 1.3057e-13;
+/// power_test: S = m_x·m_y·m_z·max(M², m_w), 5 roundings.
+inline constexpr double kPowerTest = 1.6432e-13;
+/// coplanar power test (projected lifted 3×3): S = m_u·m_v·max(M², m_w), 4 roundings.
+inline constexpr double kCoplanarPower = 3.0421e-14;
+/// collinear power test (projected lifted 2×2): S = m_q·max(M², m_w), 3 roundings.
+inline constexpr double kCollinearPower = 6.8834e-15;
+/// compare_squared_distance: S = M², 2 roundings.
+inline constexpr double kSquaredDistanceDifference = 3.7748e-15;
+/// compare_power_distance: S = max(M², |w_p|, |w_q|), 2 roundings.
+inline constexpr double kPowerDifference = 4.8850e-15;
+/// power_sign: S = max(M², |w|), 2 roundings.
+inline constexpr double kPowerValue = 1.9985e-15;
+/// side_of_ball: S = max(M, |r|)², 2 roundings.
+inline constexpr double kBallSide = 2.1095e-15;
+
+}  // namespace rstruct::predicates::detail::filter

@@ -1,0 +1,93 @@
+#include <array>
+#include <string>
+
+#include "predicates/counting.hpp"
+#include "predicates/exact_stage.hpp"
+#include "predicates/filters.hpp"
+#include "predicates/perturbation.hpp"
+#include "rstruct/core/error.hpp"
+#include "rstruct/predicates/predicates.hpp"
+
+namespace rstruct::predicates {
+namespace {
+
+int insphere_sign(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                  const Point3& e) {
+  const WeightedPoint wa{a, 0}, wb{b, 0}, wc{c, 0}, wd{d, 0}, we{e, 0};
+  const int f = detail::lifted4_filter<false>(wa, wb, wc, wd, we);
+  if (f != detail::kUndecided) {
+    RSTRUCT_PREDICATE_COUNT(insphere, filter);
+    return f;
+  }
+  const int s = detail::lifted4_exact(wa, wb, wc, wd, we);
+  if (s != 0) RSTRUCT_PREDICATE_COUNT(insphere, exact);
+  return s;
+}
+
+int power_test_sign(const WeightedPoint& a, const WeightedPoint& b, const WeightedPoint& c,
+                    const WeightedPoint& d, const WeightedPoint& e) {
+  const int f = detail::lifted4_filter<true>(a, b, c, d, e);
+  if (f != detail::kUndecided) {
+    RSTRUCT_PREDICATE_COUNT(power_test, filter);
+    return f;
+  }
+  const int s = detail::lifted4_exact(a, b, c, d, e);
+  if (s != 0) RSTRUCT_PREDICATE_COUNT(power_test, exact);
+  return s;
+}
+
+/// Sign of the perturbed predicate when the unperturbed one is zero. The predicate is
+/// −det[(p, |p|² − w_p, 1)] (rows p_0..p_4 = a..e); lowering height k by ε^(id_k+1) adds
+/// ε^(id_k+1) times the cofactor of that height in det, which is (−1)^k times the
+/// orientation of the other four points in order. The first non-zero one in id order
+/// decides.
+Sign perturbed_lifted4(const std::array<const Point3*, 5>& p,
+                       const std::array<std::uint32_t, 5>& ids, const char* where) {
+  for (const int k : detail::perturbation_order(ids, where)) {
+    std::array<const Point3*, 4> q{};
+    for (int i = 0, j = 0; i < 5; ++i) {
+      if (i != k) q[static_cast<std::size_t>(j++)] = p[static_cast<std::size_t>(i)];
+    }
+    const Sign o = orient3d(*q[0], *q[1], *q[2], *q[3]);
+    if (o != Sign::zero) return k % 2 == 0 ? o : -o;
+  }
+  throw InvalidInput(std::string("predicates::") + where +
+                     ": the cell a, b, c, d is flat (precondition orient3d != 0)");
+}
+
+}  // namespace
+
+Sign insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+              const Point3& e) {
+  const int s = insphere_sign(a, b, c, d, e);
+  if (s == 0) RSTRUCT_PREDICATE_COUNT(insphere, exact);
+  return static_cast<Sign>(s);
+}
+
+Sign power_test(const WeightedPoint& a, const WeightedPoint& b, const WeightedPoint& c,
+                const WeightedPoint& d, const WeightedPoint& e) {
+  const int s = power_test_sign(a, b, c, d, e);
+  if (s == 0) RSTRUCT_PREDICATE_COUNT(power_test, exact);
+  return static_cast<Sign>(s);
+}
+
+Sign insphere_sos(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                  const Point3& e, std::uint32_t ia, std::uint32_t ib, std::uint32_t ic,
+                  std::uint32_t id, std::uint32_t ie) {
+  const int s = insphere_sign(a, b, c, d, e);
+  if (s != 0) return static_cast<Sign>(s);
+  RSTRUCT_PREDICATE_COUNT(insphere, perturbed);
+  return perturbed_lifted4({&a, &b, &c, &d, &e}, {ia, ib, ic, id, ie}, "insphere_sos");
+}
+
+Sign power_test_sos(const WeightedPoint& a, const WeightedPoint& b, const WeightedPoint& c,
+                    const WeightedPoint& d, const WeightedPoint& e, std::uint32_t ia,
+                    std::uint32_t ib, std::uint32_t ic, std::uint32_t id, std::uint32_t ie) {
+  const int s = power_test_sign(a, b, c, d, e);
+  if (s != 0) return static_cast<Sign>(s);
+  RSTRUCT_PREDICATE_COUNT(power_test, perturbed);
+  return perturbed_lifted4({&a.c, &b.c, &c.c, &d.c, &e.c}, {ia, ib, ic, id, ie},
+                           "power_test_sos");
+}
+
+}  // namespace rstruct::predicates

@@ -1,0 +1,498 @@
+#include "builder.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <numeric>
+#include <string>
+
+#include "rstruct/core/assert.hpp"
+#include "rstruct/core/error.hpp"
+#include "rstruct/core/stopwatch.hpp"
+#include "rstruct/predicates/predicates.hpp"
+#include "rstruct/triangulation/spatial_sort.hpp"
+
+namespace rstruct::triangulation {
+
+namespace pr = rstruct::predicates;
+
+namespace {
+
+constexpr std::uint32_t kUnlinked = 0xFFFFFFFFu;
+/// Neighbour links hold cell << 2 | mirror index in 32 bits.
+constexpr std::size_t kMaxCells = std::size_t{1} << 30;
+
+/// kOther[i][j]: the two indices of {0, 1, 2, 3} other than i and j (i != j).
+constexpr int kOther[4][4][2] = {
+    {{-1, -1}, {2, 3}, {1, 3}, {1, 2}},
+    {{2, 3}, {-1, -1}, {0, 3}, {0, 2}},
+    {{1, 3}, {0, 3}, {-1, -1}, {0, 1}},
+    {{1, 2}, {0, 2}, {0, 1}, {-1, -1}},
+};
+/// kDirected[i][j] = (a, b): facet j of a positively oriented cell, counter-clockwise seen
+/// from outside the cell and rotated to start at vertex i, is (i, a, b). The cell across
+/// that facet sees it clockwise, as (i, b, a): directed edges pair up reversed.
+constexpr int kDirected[4][4][2] = {
+    {{-1, -1}, {3, 2}, {1, 3}, {2, 1}},
+    {{2, 3}, {-1, -1}, {3, 0}, {0, 2}},
+    {{3, 1}, {0, 3}, {-1, -1}, {1, 0}},
+    {{1, 2}, {2, 0}, {0, 1}, {-1, -1}},
+};
+
+/// Exact orientation of the projection of a, b, c on the coordinate plane (axis0, axis1),
+/// through orient3d on exactly representable lifted points (the projections with third
+/// coordinate 0, and a's projection raised to 1): det equals the 2D orientation.
+Sign projected_orientation(const Point3& a, const Point3& b, const Point3& c, int axis0,
+                           int axis1) {
+  const auto project = [&](const Point3& p, double up) {
+    Point3 q{0, 0, 0};
+    q[0] = p[static_cast<std::size_t>(axis0)];
+    q[1] = p[static_cast<std::size_t>(axis1)];
+    q[2] = up;
+    return q;
+  };
+  return pr::orient3d(project(a, 0), project(b, 0), project(c, 0), project(a, 1));
+}
+
+bool collinear(const Point3& a, const Point3& b, const Point3& c) {
+  return projected_orientation(a, b, c, 0, 1) == Sign::zero &&
+         projected_orientation(a, b, c, 1, 2) == Sign::zero &&
+         projected_orientation(a, b, c, 2, 0) == Sign::zero;
+}
+
+}  // namespace
+
+Builder::Builder(RegularTriangulation3& t, const TriangulationOptions& options)
+    : t_(t),
+      options_(options),
+      points_(t.points_.data()),
+      weights_(t.weights_.empty() ? nullptr : t.weights_.data()),
+      rng_(options.seed | 1u) {}
+
+void Builder::run() {
+  const std::size_t n = t_.points_.size();
+  Stopwatch clock;
+  if (options_.spatial_sort) {
+    t_.order_ = brio_order(t_.points_, options_.seed);
+  } else {
+    t_.order_.resize(n);
+    std::iota(t_.order_.begin(), t_.order_.end(), 0u);
+  }
+  const bool swap_first = choose_first_tetrahedron();
+  // Points stored in insertion order make the construction's memory accesses local
+  // (vertex ids are then ranks; input ids come back at the end). Not while a caller
+  // observes the intermediate triangulations, which must speak in input ids.
+  reorder_ = options_.spatial_sort && !options_.after_insertion;
+  if (reorder_) permute_to_insertion_order();
+  t_.stats_.sort_seconds = clock.seconds();
+  clock.reset();
+  // Delaunay of uniform points has about 6.7 cells per point; pages never touched cost
+  // nothing, so reserving generously avoids a reallocation (and its 2x peak) in practice.
+  t_.cells_.reserve(n * 7 + n / 2 + 64);
+  marks_.reserve(t_.cells_.capacity() / 32 + 1);
+  if (weights_ != nullptr) vertex_mark_.assign(n, 0);
+  vertex_local_.assign(n, 0);
+  VertexId first[4] = {vertex_at(0), vertex_at(1), vertex_at(2), vertex_at(3)};
+  if (swap_first) std::swap(first[0], first[1]);
+  make_first_cells(first);
+  t_.processed_ = 4;
+  for (std::size_t k = 0; k < 4; ++k) after_insertion(vertex_at(k));
+  for (std::size_t k = 4; k < n; ++k) {
+    insert(vertex_at(k));
+    t_.processed_ = k + 1;
+    after_insertion(vertex_at(k));
+  }
+  marks_.clear();
+  marks_.shrink_to_fit();
+  vertex_local_.clear();
+  vertex_local_.shrink_to_fit();
+  vertex_mark_.clear();
+  vertex_mark_.shrink_to_fit();
+  if (reorder_) restore_input_order();
+  t_.order_.clear();
+  t_.order_.shrink_to_fit();
+  t_.finalize(raw_hidden_);
+  t_.stats_.insertion_seconds = clock.seconds();
+}
+
+void Builder::permute_to_insertion_order() {
+  const std::vector<VertexId>& order = t_.order_;
+  std::vector<Point3> points(order.size());
+  for (std::size_t r = 0; r < order.size(); ++r) points[r] = t_.points_[order[r]];
+  t_.points_.swap(points);
+  points_ = t_.points_.data();
+  if (weights_ != nullptr) {
+    std::vector<double> weights(order.size());
+    for (std::size_t r = 0; r < order.size(); ++r) weights[r] = t_.weights_[order[r]];
+    t_.weights_.swap(weights);
+    weights_ = t_.weights_.data();
+  }
+}
+
+// Back to input ids: cell vertices and hidden records are renamed through order_, and the
+// points (and weights) are permuted in place, cycle by cycle, so no second copy is needed.
+void Builder::restore_input_order() {
+  const std::vector<VertexId>& order = t_.order_;
+  for (Cell& k : t_.cells_) {
+    if (k.v[0] == RegularTriangulation3::kFreeMark) continue;
+    for (VertexId& v : k.v) {
+      if (v != kInfiniteVertex) v = order[v];
+    }
+  }
+  for (HiddenPoint& h : raw_hidden_) h.point = order[h.point];
+  std::vector<bool> placed(order.size(), false);
+  for (std::size_t r = 0; r < order.size(); ++r) {
+    if (placed[r]) continue;
+    // The point at rank r belongs at position order[r]; follow the cycle.
+    Point3 point = t_.points_[r];
+    double weight = weights_ != nullptr ? t_.weights_[r] : 0.0;
+    std::size_t current = r;
+    do {
+      const std::size_t next = order[current];
+      std::swap(point, t_.points_[next]);
+      if (weights_ != nullptr) std::swap(weight, t_.weights_[next]);
+      placed[next] = true;
+      current = next;
+    } while (current != r);
+  }
+  points_ = t_.points_.data();
+  weights_ = weights_ != nullptr ? t_.weights_.data() : nullptr;
+  reorder_ = false;
+}
+
+void Builder::after_insertion(VertexId p) {
+  if (!options_.after_insertion) return;
+  t_.finalize(raw_hidden_);
+  options_.after_insertion(t_, p);
+}
+
+// Picks a, b != a, c not collinear with a b, d not coplanar with a b c, scanning the
+// insertion order, and moves them to its front. Returns whether (a, b, c, d) is negatively
+// oriented.
+bool Builder::choose_first_tetrahedron() {
+  std::vector<VertexId>& order = t_.order_;
+  const std::size_t n = order.size();
+  std::size_t ib = 1;
+  while (ib < n && points_[order[ib]] == points_[order[0]]) ++ib;
+  if (n < 4 || ib == n) {
+    throw InvalidInput("triangulation: fewer than 4 affinely independent points (" +
+                       std::to_string(n) + " points, all equal" +
+                       (n < 4 ? " or too few)" : ")"));
+  }
+  const Point3& a = points_[order[0]];
+  const Point3& b = points_[order[ib]];
+  std::size_t ic = ib + 1;
+  while (ic < n && collinear(a, b, points_[order[ic]])) ++ic;
+  if (ic == n) {
+    throw InvalidInput("triangulation: fewer than 4 affinely independent points (all " +
+                       std::to_string(n) + " points are collinear)");
+  }
+  const Point3& c = points_[order[ic]];
+  std::size_t id = ic + 1;
+  Sign o = Sign::zero;
+  while (id < n && (o = pr::orient3d(a, b, c, points_[order[id]])) == Sign::zero) ++id;
+  if (id == n) {
+    throw InvalidInput("triangulation: all " + std::to_string(n) +
+                       " points are coplanar; a 3D triangulation needs points spanning R^3");
+  }
+  // Move the four to the front, keeping the relative order of the others.
+  const VertexId chosen[4] = {order[0], order[ib], order[ic], order[id]};
+  std::size_t w = n;
+  for (std::size_t r = n; r-- > 0;) {
+    const VertexId v = order[r];
+    if (v != chosen[0] && v != chosen[1] && v != chosen[2] && v != chosen[3]) order[--w] = v;
+  }
+  RSTRUCT_ASSERT(w == 4);
+  for (int i = 0; i < 4; ++i) order[static_cast<std::size_t>(i)] = chosen[i];
+  return o == Sign::negative;
+}
+
+void Builder::make_first_cells(const VertexId (&v)[4]) {
+  std::vector<Cell>& cells = t_.cells_;
+  cells.push_back({{v[0], v[1], v[2], v[3]}, {0, 0, 0, 0}});
+  for (int i = 0; i < 4; ++i) {
+    Cell k = cells[0];
+    k.v[i] = kInfiniteVertex;
+    // Beyond facet i lies the side opposite v[i]: swap two other vertices to stay positive.
+    const int s = (i + 1) & 3;
+    const int u = (i + 2) & 3;
+    std::swap(k.v[s], k.v[u]);
+    cells.push_back(k);
+  }
+  marks_.assign(1, 0);
+  // Link the five cells by matching facets (sorted vertex triples).
+  const auto facet_key = [&](CellId c, int i) {
+    std::array<VertexId, 3> f{};
+    int m = 0;
+    for (int j = 0; j < 4; ++j) {
+      if (j != i) f[static_cast<std::size_t>(m++)] = cells[c].v[j];
+    }
+    std::sort(f.begin(), f.end());
+    return f;
+  };
+  for (CellId c = 0; c < 5; ++c) {
+    for (int i = 0; i < 4; ++i) {
+      bool found = false;
+      for (CellId d = 0; d < 5 && !found; ++d) {
+        for (int j = 0; j < 4 && !found; ++j) {
+          if (d != c && facet_key(c, i) == facet_key(d, j)) {
+            cells[c].n[i] = d << 2 | static_cast<std::uint32_t>(j);
+            found = true;
+          }
+        }
+      }
+      RSTRUCT_ASSERT(found);
+    }
+  }
+  last_ = 0;
+}
+
+CellId Builder::new_cell() {
+  std::vector<Cell>& cells = t_.cells_;
+  if (t_.free_head_ != kNoCell) {
+    const CellId c = t_.free_head_;
+    t_.free_head_ = cells[c].n[0];
+    --t_.free_count_;
+    return c;
+  }
+  if (cells.size() >= kMaxCells) {
+    throw InvalidInput("triangulation: more than 2^30 cells needed; the input is too large");
+  }
+  cells.push_back(Cell{});
+  if (cells.size() > marks_.size() * 32) marks_.push_back(0);
+  return static_cast<CellId>(cells.size() - 1);
+}
+
+bool Builder::in_conflict(CellId c, VertexId p) {
+  const Cell& k = t_.cells_[c];
+  const int inf = t_.infinite_index(c);
+  ++t_.stats_.power_test_calls;
+  if (inf < 0) {
+    if (weights_ == nullptr) {
+      return pr::insphere_sos(points_[k.v[0]], points_[k.v[1]], points_[k.v[2]],
+                              points_[k.v[3]], points_[p], input_id(k.v[0]),
+                              input_id(k.v[1]), input_id(k.v[2]), input_id(k.v[3]),
+                              input_id(p)) == Sign::positive;
+    }
+    const auto wp = [&](VertexId v) { return WeightedPoint{points_[v], weights_[v]}; };
+    return pr::power_test_sos(wp(k.v[0]), wp(k.v[1]), wp(k.v[2]), wp(k.v[3]), wp(p),
+                              input_id(k.v[0]), input_id(k.v[1]), input_id(k.v[2]),
+                              input_id(k.v[3]), input_id(p)) == Sign::positive;
+  }
+  const int o = t_.orient_replaced(c, inf, points_[p]);
+  if (o != 0) return o > 0;
+  // p lies in the plane of the hull facet: decide in that plane (2D power test).
+  VertexId f[3];
+  int m = 0;
+  for (int j = 0; j < 4; ++j) {
+    if (j != inf) f[m++] = k.v[j];
+  }
+  const auto wp = [&](VertexId v) {
+    return WeightedPoint{points_[v], weights_ == nullptr ? 0.0 : weights_[v]};
+  };
+  return pr::coplanar_power_test_sos(wp(f[0]), wp(f[1]), wp(f[2]), wp(p), input_id(f[0]),
+                                     input_id(f[1]), input_id(f[2]),
+                                     input_id(p)) == Sign::positive;
+}
+
+void Builder::insert(VertexId p) {
+  const Point3& q = points_[p];
+  const CellId c = t_.walk(q, t_.is_cell(last_) ? last_ : t_.any_cell(), rng_,
+                           t_.stats_.walk_steps);
+  if (!in_conflict(c, p)) {
+    raw_hidden_.push_back({p, c});
+    last_ = c;
+    return;
+  }
+  // Delaunay: a vertex is hidden only by a point with its exact coordinates.
+  VertexId duplicate_of = kInfiniteVertex;
+  if (weights_ == nullptr) {
+    for (const VertexId v : t_.cells_[c].v) {
+      if (v != kInfiniteVertex && points_[v] == q) duplicate_of = v;
+    }
+  }
+  find_conflict_region(c, p);
+  build_star(p);
+  collect_hidden_vertices(p, duplicate_of);
+  release_conflict_region();
+}
+
+void Builder::find_conflict_region(CellId start, VertexId p) {
+  conflict_.clear();
+  outside_.clear();
+  boundary_.clear();
+  stack_.clear();
+  set_mark(start, kConflict);
+  stack_.push_back(start);
+  while (!stack_.empty()) {
+    const CellId x = stack_.back();
+    stack_.pop_back();
+    conflict_.push_back(x);
+    // The neighbours are usually not in cache: start all four loads before testing.
+    const Cell& k = t_.cells_[x];
+    for (int i = 0; i < 4; ++i) __builtin_prefetch(&t_.cells_[k.n[i] >> 2]);
+    for (int i = 0; i < 4; ++i) {
+      const CellId y = t_.cells_[x].n[i] >> 2;
+      const unsigned m = mark(y);
+      if (m == kConflict) continue;
+      if (m == kNone) {
+        if (in_conflict(y, p)) {
+          set_mark(y, kConflict);
+          stack_.push_back(y);
+          continue;
+        }
+        set_mark(y, kOutside);
+        outside_.push_back(y);
+      }
+      boundary_.push_back({x, i});
+    }
+  }
+  t_.stats_.conflict_cells += conflict_.size();
+}
+
+// One new cell per boundary facet (the facet joined to p), linked to the cell outside the
+// cavity; link_star() links the new cells among themselves.
+void Builder::build_star(VertexId p) {
+  std::vector<Cell>& cells = t_.cells_;
+  star_.clear();
+  for (const BoundaryFacet& b : boundary_) {
+    const CellId n = new_cell();
+    Cell& k = cells[n];
+    const Cell& x = cells[b.cell];
+    const std::uint32_t out = x.n[b.index];
+    for (int j = 0; j < 4; ++j) {
+      k.v[j] = x.v[j];
+      k.n[j] = kUnlinked;
+    }
+    k.v[b.index] = p;
+    k.n[b.index] = out;
+    const std::uint32_t self = n << 2 | static_cast<std::uint32_t>(b.index);
+    cells[out >> 2].n[out & 3u] = self;
+    star_.push_back(n);
+  }
+  link_star();
+  last_ = star_.front();
+}
+
+// The new cells' facets through p pair up along the edges of the cavity boundary, a
+// triangulated sphere in which every edge lies in exactly two facets with opposite
+// directions. With the boundary's vertices numbered 0..31 (the infinite vertex 0), facet j
+// of new cell n is written at [a][b] and finds its partner at [b][a]: no search, no
+// branch. Larger cavities (degenerate input) use a hash table.
+void Builder::link_star() {
+  std::vector<Cell>& cells = t_.cells_;
+  local_vertices_.clear();
+  const auto local = [&](VertexId v) -> std::size_t {
+    if (v == kInfiniteVertex) return 0;
+    if (vertex_local_[v] == 0 && local_vertices_.size() < kLocal - 1) {
+      local_vertices_.push_back(v);
+      vertex_local_[v] = static_cast<std::uint8_t>(local_vertices_.size());
+    }
+    return vertex_local_[v];  // 0 only when the numbering overflowed
+  };
+  // Pass 0 writes every directed edge, pass 1 reads the reversed one.
+  for (int pass = 0; pass < 2; ++pass) {
+    for (std::size_t s = 0; s < star_.size(); ++s) {
+      const CellId n = star_[s];
+      const int i = boundary_[s].index;  // p's index in n
+      for (int j = 0; j < 4; ++j) {
+        if (j == i) continue;
+        const std::size_t a = local(cells[n].v[kDirected[i][j][0]]);
+        const std::size_t b = local(cells[n].v[kDirected[i][j][1]]);
+        if (pass == 0) {
+          edge_faces_[a * kLocal + b] = n << 2 | static_cast<std::uint32_t>(j);
+        } else {
+          cells[n].n[j] = edge_faces_[b * kLocal + a];
+        }
+      }
+    }
+    if (local_vertices_.size() == kLocal - 1) break;  // may have overflowed: start over
+  }
+  for (const VertexId v : local_vertices_) vertex_local_[v] = 0;
+  if (local_vertices_.size() == kLocal - 1) link_star_hashed();
+}
+
+// Fallback for cavities with many boundary vertices: an open-addressing table keyed by the
+// edge's vertex ids pairs the facets; stamps avoid clearing it.
+void Builder::link_star_hashed() {
+  std::vector<Cell>& cells = t_.cells_;
+  std::size_t size = 64;
+  while (size < 4 * boundary_.size()) size *= 2;
+  if (edge_table_.size() < size || ++stamp_ == 0) {
+    edge_table_.assign(std::max(size, edge_table_.size()), EdgeSlot{0, 0, 0});
+    stamp_ = 1;
+  }
+  const std::size_t mask = edge_table_.size() - 1;
+  const int shift = 64 - std::countr_zero(edge_table_.size());
+  for (std::size_t s = 0; s < star_.size(); ++s) {
+    const CellId n = star_[s];
+    const int i = boundary_[s].index;  // p's index in n
+    for (int j = 0; j < 4; ++j) {
+      if (j == i) continue;
+      const int k = kOther[i][j][0];
+      const int l = kOther[i][j][1];
+      const VertexId a = cells[n].v[k];
+      const VertexId b = cells[n].v[l];
+      const std::uint64_t key = a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);
+      std::size_t h = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> shift);
+      const std::uint32_t self = n << 2 | static_cast<std::uint32_t>(j);
+      for (;; h = (h + 1) & mask) {
+        EdgeSlot& e = edge_table_[h];
+        if (e.stamp != stamp_) {
+          e = {key, self, stamp_};
+          break;
+        }
+        if (e.key == key) {
+          cells[n].n[j] = e.face;
+          cells[e.face >> 2].n[e.face & 3u] = self;
+          break;
+        }
+      }
+    }
+  }
+}
+
+void Builder::collect_hidden_vertices(VertexId p, VertexId duplicate_of) {
+  const std::vector<Cell>& cells = t_.cells_;
+  if (weights_ == nullptr) {
+    if (duplicate_of != kInfiniteVertex) raw_hidden_.push_back({duplicate_of, last_});
+    return;
+  }
+  cavity_vertices_.clear();
+  for (const CellId x : conflict_) {
+    for (const VertexId v : cells[x].v) {
+      if (v != kInfiniteVertex && vertex_mark_[v] == 0) {
+        vertex_mark_[v] = 1;
+        cavity_vertices_.push_back(v);
+      }
+    }
+  }
+  for (const CellId n : star_) {
+    for (const VertexId v : cells[n].v) {
+      if (v != kInfiniteVertex) vertex_mark_[v] = 2;
+    }
+  }
+  for (const VertexId v : cavity_vertices_) {
+    if (vertex_mark_[v] == 1) raw_hidden_.push_back({v, last_});
+    vertex_mark_[v] = 0;
+  }
+  for (const CellId n : star_) {
+    for (const VertexId v : cells[n].v) {
+      if (v != kInfiniteVertex) vertex_mark_[v] = 0;
+    }
+  }
+  (void)p;
+}
+
+void Builder::release_conflict_region() {
+  std::vector<Cell>& cells = t_.cells_;
+  for (const CellId x : conflict_) {
+    cells[x].v[0] = RegularTriangulation3::kFreeMark;
+    cells[x].n[0] = t_.free_head_;
+    t_.free_head_ = x;
+    set_mark(x, kNone);
+  }
+  t_.free_count_ += conflict_.size();
+  for (const CellId y : outside_) set_mark(y, kNone);
+}
+
+}  // namespace rstruct::triangulation

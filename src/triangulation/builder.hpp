@@ -1,0 +1,86 @@
+#pragma once
+// The incremental construction of a RegularTriangulation3 (Bowyer–Watson with the perturbed
+// power test). Private to src/triangulation.
+
+#include <cstdint>
+#include <vector>
+
+#include "rstruct/triangulation/regular_triangulation_3.hpp"
+
+namespace rstruct::triangulation {
+
+class Builder {
+ public:
+  Builder(RegularTriangulation3& t, const TriangulationOptions& options);
+  /// Sorts, builds the first tetrahedron, inserts every other point, finalizes.
+  /// \throws InvalidInput when the points do not span R³.
+  void run();
+
+ private:
+  using Cell = RegularTriangulation3::Cell;
+  struct BoundaryFacet {
+    CellId cell;  // conflict cell
+    int index;    // its facet on the cavity boundary
+  };
+  enum Mark : std::uint8_t { kNone = 0, kConflict = 1, kOutside = 2 };
+
+  bool choose_first_tetrahedron();
+  void permute_to_insertion_order();
+  void restore_input_order();
+  /// Vertex id of the k-th point inserted.
+  VertexId vertex_at(std::size_t k) const {
+    return reorder_ ? static_cast<VertexId>(k) : t_.order_[k];
+  }
+  /// Input id (the perturbation's index) of vertex v.
+  std::uint32_t input_id(VertexId v) const { return reorder_ ? t_.order_[v] : v; }
+  void make_first_cells(const VertexId (&v)[4]);
+  void insert(VertexId p);
+  bool in_conflict(CellId c, VertexId p);
+  void find_conflict_region(CellId start, VertexId p);
+  void build_star(VertexId p);
+  void link_star();
+  void link_star_hashed();
+  void collect_hidden_vertices(VertexId p, VertexId duplicate_of);
+  void release_conflict_region();
+  CellId new_cell();
+  void after_insertion(VertexId p);
+
+  RegularTriangulation3& t_;
+  const TriangulationOptions& options_;
+  const Point3* points_;
+  const double* weights_;  // nullptr: Delaunay fast path
+  /// Two bits per cell (a Mark), 32 cells per word: 1/4 byte per cell of peak memory.
+  std::vector<std::uint64_t> marks_;
+  unsigned mark(CellId c) const {
+    return static_cast<unsigned>(marks_[c >> 5] >> ((c & 31u) * 2)) & 3u;
+  }
+  void set_mark(CellId c, unsigned m) {
+    std::uint64_t& w = marks_[c >> 5];
+    const unsigned shift = (c & 31u) * 2;
+    w = (w & ~(std::uint64_t{3} << shift)) | (std::uint64_t{m} << shift);
+  }
+  std::vector<std::uint8_t> vertex_mark_;  // per point (weighted only)
+  std::vector<CellId> conflict_;
+  std::vector<CellId> stack_;
+  std::vector<CellId> outside_;
+  std::vector<BoundaryFacet> boundary_;
+  std::vector<CellId> star_;                // new cell of boundary_[k]
+  struct EdgeSlot {
+    std::uint64_t key;    // the edge's two vertex ids, smaller first
+    std::uint32_t face;   // new cell << 2 | facet index
+    std::uint32_t stamp;  // slot in use iff stamp == stamp_
+  };
+  std::vector<EdgeSlot> edge_table_;        // open addressing, power-of-two size
+  static constexpr std::size_t kLocal = 32;  // boundary vertices numbered 0..kLocal-1
+  std::vector<std::uint8_t> vertex_local_;   // per point: its number on the boundary, or 0
+  std::vector<VertexId> local_vertices_;
+  std::uint32_t edge_faces_[kLocal * kLocal] = {};
+  std::uint32_t stamp_ = 0;
+  std::vector<VertexId> cavity_vertices_;
+  std::vector<HiddenPoint> raw_hidden_;
+  CellId last_ = 0;
+  bool reorder_ = false;
+  std::uint64_t rng_;
+};
+
+}  // namespace rstruct::triangulation

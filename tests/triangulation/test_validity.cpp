@@ -1,0 +1,179 @@
+// is_valid() after every insertion on random and degenerate inputs; zero weights give the
+// Delaunay triangulation; the result does not depend on the insertion order.
+#include <rapidcheck/catch.h>
+
+#include <catch2/catch.hpp>
+#include <numeric>
+
+#include "generators.hpp"
+#include "rstruct/core/error.hpp"
+#include "rstruct/triangulation/regular_triangulation_3.hpp"
+
+namespace {
+
+using rstruct::Point3;
+using rstruct::test::cell_set;
+using rstruct::triangulation::RegularTriangulation3;
+using rstruct::triangulation::TriangulationOptions;
+using rstruct::triangulation::VertexId;
+
+struct Input {
+  std::vector<Point3> points;
+  std::vector<double> weights;
+};
+
+Input degenerate_input(int kind, std::uint64_t seed, std::size_t n) {
+  using namespace rstruct::test;
+  switch (kind) {
+    case 0: return {uniform_points(n, seed), {}};
+    case 1: {
+      const int s = 2 + static_cast<int>(seed % 4);  // grids 2^3 .. 5^3
+      return {grid_points(s, s, s), {}};
+    }
+    case 2: return {sphere_points(static_cast<int>(seed % 3) == 0 ? 26 : 50), {}};
+    case 3: return {few_plane_points(n, 2 + static_cast<int>(seed % 3), seed), {}};
+    case 4: return {duplicate_points(n, 12, seed), {}};
+    case 5: return {uniform_points(n, seed), hiding_weights(n, 0.3, seed ^ 5)};
+    case 6: {
+      std::vector<Point3> p = duplicate_points(n, 12, seed);
+      return {p, hiding_weights(n, 2.0, seed ^ 6)};
+    }
+    default: {
+      std::vector<Point3> p = grid_points(4, 4, 3);
+      return {p, hiding_weights(p.size(), 1.5, seed ^ 7)};
+    }
+  }
+}
+
+RegularTriangulation3 build(const Input& in, const TriangulationOptions& options) {
+  return in.weights.empty() ? RegularTriangulation3(in.points, options)
+                            : RegularTriangulation3(in.points, in.weights, options);
+}
+
+}  // namespace
+
+TEST_CASE("is_valid after every insertion") {
+  rc::prop("random, grid, cospherical, few-plane, duplicate-heavy, hidden-heavy", [] {
+    const int kind = *rc::gen::inRange(0, 8);
+    const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+    const auto n = static_cast<std::size_t>(*rc::gen::inRange(4, 80));
+    RC_TAG(kind);
+    const Input in = degenerate_input(kind, seed, n);
+    TriangulationOptions options;
+    options.seed = seed;
+    std::size_t calls = 0;
+    std::string failure;
+    options.after_insertion = [&](const RegularTriangulation3& t, VertexId) {
+      ++calls;
+      if (failure.empty()) failure = t.is_valid().message;
+    };
+    try {
+      const RegularTriangulation3 t = build(in, options);
+      RC_ASSERT(failure == std::string());
+      RC_ASSERT(calls == in.points.size());
+      RC_ASSERT(t.number_of_vertices() + t.hidden_points().size() +
+                    t.duplicate_points().size() ==
+                in.points.size());
+      if (in.weights.empty()) RC_ASSERT(t.hidden_points().empty());
+    } catch (const rstruct::InvalidInput&) {
+      RC_ASSERT(kind == 3 || kind == 4 || kind == 6);  // may be flat by chance
+    }
+  });
+}
+
+TEST_CASE("10^3 grid, cospherical sets and duplicates end valid") {
+  const RegularTriangulation3 grid(rstruct::test::grid_points(10, 10, 10));
+  CHECK(grid.is_valid().message == "");
+  CHECK(grid.number_of_vertices() == 1000);
+  // Every unit cube of the grid is split into tetrahedra of volume 1/6 in total.
+  CHECK(grid.number_of_finite_cells() >= 729 * 5);
+  const RegularTriangulation3 sphere(rstruct::test::sphere_points(101));
+  CHECK(sphere.is_valid().message == "");
+  CHECK(sphere.number_of_vertices() == sphere.number_of_points());
+  std::vector<Point3> twice = rstruct::test::grid_points(3, 3, 3);
+  twice.insert(twice.end(), twice.begin(), twice.end());
+  const RegularTriangulation3 dup(twice);
+  CHECK(dup.is_valid().message == "");
+  CHECK(dup.number_of_vertices() == 27);
+  REQUIRE(dup.duplicate_points().size() == 27);
+  for (const auto& d : dup.duplicate_points()) {
+    CHECK(d.point == d.vertex + 27);  // the smaller id wins at equal weight
+  }
+}
+
+TEST_CASE("duplicates: the larger weight wins") {
+  std::vector<Point3> p = rstruct::test::grid_points(2, 2, 2);
+  p.push_back(p[3]);
+  std::vector<double> w(9, 0.0);
+  w[8] = 0.125;  // the later copy is heavier
+  const RegularTriangulation3 t(p, w);
+  CHECK(t.is_valid().message == "");
+  CHECK(!t.is_vertex(3));
+  CHECK(t.is_vertex(8));
+  REQUIRE(t.duplicate_points().size() == 1);
+  CHECK(t.duplicate_points()[0].point == 3);
+  CHECK(t.duplicate_points()[0].vertex == 8);
+}
+
+TEST_CASE("zero weights give exactly the Delaunay triangulation") {
+  rc::prop("weighted with zeros == unweighted", [] {
+    const int kind = *rc::gen::inRange(0, 5);
+    const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+    const auto n = static_cast<std::size_t>(*rc::gen::inRange(4, 200));
+    Input in = degenerate_input(kind, seed, n);
+    try {
+      const RegularTriangulation3 d(in.points);
+      const RegularTriangulation3 r(in.points, std::vector<double>(in.points.size(), 0.0));
+      RC_ASSERT(cell_set(d) == cell_set(r));
+      RC_ASSERT(d.duplicate_points().size() == r.duplicate_points().size());
+      RC_ASSERT(r.hidden_points().empty());
+    } catch (const rstruct::InvalidInput&) {
+      RC_ASSERT(kind == 3 || kind == 4);
+    }
+  });
+}
+
+TEST_CASE("the result does not depend on the insertion order") {
+  rc::prop("BRIO seeds and input order give the same cells", [] {
+    const int kind = *rc::gen::inRange(0, 8);
+    const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+    const auto n = static_cast<std::size_t>(*rc::gen::inRange(4, 300));
+    const Input in = degenerate_input(kind, seed, n);
+    TriangulationOptions a;
+    a.seed = seed;
+    TriangulationOptions b;
+    b.seed = seed * 31 + 7;
+    TriangulationOptions c;
+    c.spatial_sort = false;
+    try {
+      const RegularTriangulation3 ta = build(in, a);
+      const RegularTriangulation3 tb = build(in, b);
+      const RegularTriangulation3 tc = build(in, c);
+      RC_ASSERT(cell_set(ta) == cell_set(tb));
+      RC_ASSERT(cell_set(ta) == cell_set(tc));
+      RC_ASSERT(ta.hidden_points().size() == tc.hidden_points().size());
+      RC_ASSERT(ta.duplicate_points().size() == tc.duplicate_points().size());
+    } catch (const rstruct::InvalidInput&) {
+      RC_ASSERT(kind == 3 || kind == 4 || kind == 6);
+    }
+  });
+  rc::prop("relabelling generic points relabels the cells", [] {
+    const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+    const auto n = static_cast<std::size_t>(*rc::gen::inRange(5, 300));
+    const std::vector<Point3> p = rstruct::test::uniform_points(n, seed);
+    std::vector<std::uint32_t> perm(n);
+    std::iota(perm.begin(), perm.end(), 0u);
+    rstruct::test::Random r(seed ^ 0xABCDEF);
+    for (std::size_t i = n; i > 1; --i) std::swap(perm[i - 1], perm[r.next() % i]);
+    std::vector<Point3> q(n);
+    for (std::size_t i = 0; i < n; ++i) q[perm[i]] = p[i];
+    auto expected = cell_set(RegularTriangulation3(p));
+    std::set<rstruct::test::CellKey> mapped;
+    for (auto k : expected) {
+      for (auto& v : k) v = perm[v];
+      std::sort(k.begin(), k.end());
+      mapped.insert(k);
+    }
+    RC_ASSERT(cell_set(RegularTriangulation3(q)) == mapped);
+  });
+}
