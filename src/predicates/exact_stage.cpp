@@ -1,3 +1,10 @@
+// The exact stage. Inputs are scaled to integers at one common binary unit (exact), then
+// the polynomial of polynomials.hpp is evaluated in FastInt (inline limbs, no heap) when
+// a bound on the bit length of the result fits, and in GMP otherwise (inputs spanning
+// hundreds of binary orders of magnitude). The bit bounds: differences of scaled
+// coordinates have at most Bc bits, lifting heights at most L bits
+// (ScaleFinder::lifted_height_bits); a sum of k products of such factors needs
+// log2(k) more bits than one product.
 #include "predicates/exact_stage.hpp"
 
 #include <gmpxx.h>
@@ -14,24 +21,28 @@
 namespace rstruct::predicates::detail {
 namespace {
 
-using Z = mpz_class;
-
-/// Exact integer images of a few points at one common scale.
 template <std::size_t N>
-struct ScaledPoints {
+using PointRefs = std::array<const WeightedPoint*, N>;
+
+template <class Z, std::size_t N>
+struct Scaled {
   std::array<std::array<Z, 3>, N> c;  // coordinates / 2^s
   std::array<Z, N> w;                 // weights / 2^(2s)
 };
 
 template <std::size_t N>
-ScaledPoints<N> scale_points(const std::array<const WeightedPoint*, N>& pts, bool weighted) {
+ScaleFinder find_scale(const PointRefs<N>& pts, bool weighted) {
   ScaleFinder finder;
   for (const WeightedPoint* p : pts) {
-    for (int i = 0; i < 3; ++i) finder.add_coordinate(p->c[static_cast<std::size_t>(i)]);
+    for (std::size_t i = 0; i < 3; ++i) finder.add_coordinate(p->c[i]);
     if (weighted) finder.add_weight(p->w);
   }
-  const int s = finder.unit();
-  ScaledPoints<N> out;
+  return finder;
+}
+
+template <class Z, std::size_t N>
+Scaled<Z, N> convert(const PointRefs<N>& pts, bool weighted, int s) {
+  Scaled<Z, N> out;
   for (std::size_t j = 0; j < N; ++j) {
     for (std::size_t i = 0; i < 3; ++i) set_scaled(out.c[j][i], pts[j]->c[i], s);
     if (weighted) set_scaled(out.w[j], pts[j]->w, 2 * s);
@@ -39,8 +50,108 @@ ScaledPoints<N> scale_points(const std::array<const WeightedPoint*, N>& pts, boo
   return out;
 }
 
-void require_finite_points(const char* where, std::initializer_list<const WeightedPoint*> pts) {
+/// Calls eval with a FastInt tag if `bits` fit in FastInt, with an mpz_class tag otherwise.
+template <class Eval>
+int dispatch(int bits, const Eval& eval) {
+  if (bits <= FastInt::bit_capacity()) return eval(FastInt());
+  return eval(mpz_class());
+}
+
+template <std::size_t N>
+void require_finite_points(const char* where, const PointRefs<N>& pts) {
   for (const WeightedPoint* p : pts) require_finite(where, {p->c.x, p->c.y, p->c.z, p->w});
+}
+
+template <class Z>
+int orient3d_eval(const PointRefs<4>& pts, int s) {
+  const auto v = convert<Z, 4>(pts, false, s);
+  std::array<std::array<Z, 3>, 3> t;
+  for (std::size_t j = 0; j < 3; ++j) {
+    for (std::size_t i = 0; i < 3; ++i) t[j][i] = v.c[j + 1][i] - v.c[0][i];
+  }
+  return sign_int(det3(t[0][0], t[0][1], t[0][2], t[1][0], t[1][1], t[1][2], t[2][0], t[2][1],
+                       t[2][2]));
+}
+
+template <class Z>
+int orient2d_eval(const PointRefs<3>& pts, int s, int k) {
+  const auto v = convert<Z, 3>(pts, false, s);
+  const auto u = static_cast<std::size_t>((k + 1) % 3), w = static_cast<std::size_t>((k + 2) % 3);
+  const Z bu = v.c[1][u] - v.c[0][u], bv = v.c[1][w] - v.c[0][w];
+  const Z cu = v.c[2][u] - v.c[0][u], cv = v.c[2][w] - v.c[0][w];
+  return sign_int(minor2(bu, bv, cu, cv));
+}
+
+template <class Z>
+int lifted4_eval(const PointRefs<5>& pts, int s) {
+  const auto v = convert<Z, 5>(pts, true, s);
+  std::array<std::array<Z, 4>, 4> r;  // rows (x, y, z, lifted height) relative to e
+  for (std::size_t j = 0; j < 4; ++j) {
+    for (std::size_t i = 0; i < 3; ++i) r[j][i] = v.c[j][i] - v.c[4][i];
+    const Z tw = v.w[j] - v.w[4];
+    r[j][3] = lifted_height(r[j][0], r[j][1], r[j][2], tw);
+  }
+  const LiftedRows<Z> rows{r[0][0], r[0][1], r[0][2], r[0][3], r[1][0], r[1][1], r[1][2], r[1][3],
+                           r[2][0], r[2][1], r[2][2], r[2][3], r[3][0], r[3][1], r[3][2], r[3][3]};
+  return sign_int(lifted_det4_negated(rows));
+}
+
+template <class Z>
+int coplanar_eval(const PointRefs<4>& pts, int s, int k) {
+  const auto v = convert<Z, 4>(pts, true, s);
+  const auto u = static_cast<std::size_t>((k + 1) % 3), w = static_cast<std::size_t>((k + 2) % 3);
+  std::array<std::array<Z, 3>, 3> r;  // rows (u, v, lifted height) relative to e
+  for (std::size_t j = 0; j < 3; ++j) {
+    const Z tx = v.c[j][0] - v.c[3][0], ty = v.c[j][1] - v.c[3][1], tz = v.c[j][2] - v.c[3][2];
+    const Z tw = v.w[j] - v.w[3];
+    r[j][0] = v.c[j][u] - v.c[3][u];
+    r[j][1] = v.c[j][w] - v.c[3][w];
+    r[j][2] = lifted_height(tx, ty, tz, tw);
+  }
+  return sign_int(lifted_det3(r[0][0], r[0][1], r[0][2], r[1][0], r[1][1], r[1][2], r[2][0],
+                              r[2][1], r[2][2]));
+}
+
+template <class Z>
+int collinear_eval(const PointRefs<3>& pts, int s, int k) {
+  const auto v = convert<Z, 3>(pts, true, s);
+  const auto q = static_cast<std::size_t>(k);
+  std::array<Z, 2> tq, h;
+  for (std::size_t j = 0; j < 2; ++j) {
+    const Z tx = v.c[j][0] - v.c[2][0], ty = v.c[j][1] - v.c[2][1], tz = v.c[j][2] - v.c[2][2];
+    const Z tw = v.w[j] - v.w[2];
+    tq[j] = v.c[j][q] - v.c[2][q];
+    h[j] = lifted_height(tx, ty, tz, tw);
+  }
+  return sign_int(lifted_det2(tq[0], h[0], tq[1], h[1]));
+}
+
+template <class Z>
+int power_difference_eval(const PointRefs<3>& pts, int s) {
+  const auto v = convert<Z, 3>(pts, true, s);
+  std::array<std::array<Z, 3>, 2> t;
+  for (std::size_t j = 0; j < 2; ++j) {
+    for (std::size_t i = 0; i < 3; ++i) t[j][i] = v.c[0][i] - v.c[j + 1][i];
+  }
+  return sign_int(power_difference(t[0][0], t[0][1], t[0][2], v.w[1], t[1][0], t[1][1],
+                                   t[1][2], v.w[2]));
+}
+
+template <class Z>
+int power_value_eval(const PointRefs<2>& pts, int s) {
+  const auto v = convert<Z, 2>(pts, true, s);
+  std::array<Z, 3> t;
+  for (std::size_t i = 0; i < 3; ++i) t[i] = v.c[0][i] - v.c[1][i];
+  return sign_int(power_value(t[0], t[1], t[2], v.w[1]));
+}
+
+/// pts = {x, centre, (r, 0, 0)}: the radius is a length on the coordinates' scale.
+template <class Z>
+int ball_side_eval(const PointRefs<3>& pts, int s) {
+  const auto v = convert<Z, 3>(pts, false, s);
+  std::array<Z, 3> t;
+  for (std::size_t i = 0; i < 3; ++i) t[i] = v.c[0][i] - v.c[1][i];
+  return sign_int(ball_side_value(t[0], t[1], t[2], v.c[2][0]));
 }
 
 }  // namespace
@@ -56,71 +167,49 @@ void require_finite(const char* where, std::initializer_list<double> values) {
 
 int orient3d_exact(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
   const WeightedPoint wa{a, 0}, wb{b, 0}, wc{c, 0}, wd{d, 0};
-  require_finite_points("orient3d", {&wa, &wb, &wc, &wd});
-  const auto s = scale_points<4>({&wa, &wb, &wc, &wd}, false);
-  std::array<std::array<Z, 3>, 3> t;
-  for (std::size_t j = 0; j < 3; ++j) {
-    for (std::size_t i = 0; i < 3; ++i) t[j][i] = s.c[j + 1][i] - s.c[0][i];
-  }
-  return sign_int(det3(t[0][0], t[0][1], t[0][2], t[1][0], t[1][1], t[1][2], t[2][0], t[2][1],
-                       t[2][2]));
+  const PointRefs<4> pts{&wa, &wb, &wc, &wd};
+  require_finite_points("orient3d", pts);
+  const ScaleFinder f = find_scale(pts, false);
+  return dispatch(3 * f.coordinate_difference_bits() + 3, [&](auto tag) {
+    return orient3d_eval<decltype(tag)>(pts, f.unit());
+  });
 }
 
 int orient2d_exact(const Point3& a, const Point3& b, const Point3& c, int k) {
   const WeightedPoint wa{a, 0}, wb{b, 0}, wc{c, 0};
-  require_finite_points("orient2d", {&wa, &wb, &wc});
-  const auto s = scale_points<3>({&wa, &wb, &wc}, false);
-  const auto u = static_cast<std::size_t>((k + 1) % 3), v = static_cast<std::size_t>((k + 2) % 3);
-  const Z bu = s.c[1][u] - s.c[0][u], bv = s.c[1][v] - s.c[0][v];
-  const Z cu = s.c[2][u] - s.c[0][u], cv = s.c[2][v] - s.c[0][v];
-  return sign_int(minor2(bu, bv, cu, cv));
+  const PointRefs<3> pts{&wa, &wb, &wc};
+  require_finite_points("orient2d", pts);
+  const ScaleFinder f = find_scale(pts, false);
+  return dispatch(2 * f.coordinate_difference_bits() + 1, [&](auto tag) {
+    return orient2d_eval<decltype(tag)>(pts, f.unit(), k);
+  });
 }
 
 int lifted4_exact(const WeightedPoint& a, const WeightedPoint& b, const WeightedPoint& c,
                   const WeightedPoint& d, const WeightedPoint& e) {
-  require_finite_points("power_test", {&a, &b, &c, &d, &e});
-  const auto s = scale_points<5>({&a, &b, &c, &d, &e}, true);
-  std::array<std::array<Z, 4>, 4> r;  // rows (x, y, z, lifted height) relative to e
-  for (std::size_t j = 0; j < 4; ++j) {
-    for (std::size_t i = 0; i < 3; ++i) r[j][i] = s.c[j][i] - s.c[4][i];
-    const Z tw = s.w[j] - s.w[4];
-    r[j][3] = lifted_height(r[j][0], r[j][1], r[j][2], tw);
-  }
-  const LiftedRows<Z> rows{r[0][0], r[0][1], r[0][2], r[0][3], r[1][0], r[1][1], r[1][2], r[1][3],
-                           r[2][0], r[2][1], r[2][2], r[2][3], r[3][0], r[3][1], r[3][2], r[3][3]};
-  return sign_int(lifted_det4_negated(rows));
+  const PointRefs<5> pts{&a, &b, &c, &d, &e};
+  require_finite_points("power_test", pts);
+  const ScaleFinder f = find_scale(pts, true);
+  return dispatch(3 * f.coordinate_difference_bits() + f.lifted_height_bits() + 5,
+                  [&](auto tag) { return lifted4_eval<decltype(tag)>(pts, f.unit()); });
 }
 
 int coplanar_power_exact(const WeightedPoint& a, const WeightedPoint& b,
                          const WeightedPoint& c, const WeightedPoint& e, int k) {
-  require_finite_points("coplanar_power_test", {&a, &b, &c, &e});
-  const auto s = scale_points<4>({&a, &b, &c, &e}, true);
-  const auto u = static_cast<std::size_t>((k + 1) % 3), v = static_cast<std::size_t>((k + 2) % 3);
-  std::array<std::array<Z, 3>, 3> r;  // rows (u, v, lifted height) relative to e
-  for (std::size_t j = 0; j < 3; ++j) {
-    const Z tx = s.c[j][0] - s.c[3][0], ty = s.c[j][1] - s.c[3][1], tz = s.c[j][2] - s.c[3][2];
-    const Z tw = s.w[j] - s.w[3];
-    r[j][0] = s.c[j][u] - s.c[3][u];
-    r[j][1] = s.c[j][v] - s.c[3][v];
-    r[j][2] = lifted_height(tx, ty, tz, tw);
-  }
-  return sign_int(lifted_det3(r[0][0], r[0][1], r[0][2], r[1][0], r[1][1], r[1][2], r[2][0],
-                              r[2][1], r[2][2]));
+  const PointRefs<4> pts{&a, &b, &c, &e};
+  require_finite_points("coplanar_power_test", pts);
+  const ScaleFinder f = find_scale(pts, true);
+  return dispatch(2 * f.coordinate_difference_bits() + f.lifted_height_bits() + 3,
+                  [&](auto tag) { return coplanar_eval<decltype(tag)>(pts, f.unit(), k); });
 }
 
 int collinear_power_exact(const WeightedPoint& a, const WeightedPoint& b,
                           const WeightedPoint& e, int k) {
-  require_finite_points("collinear_power_test", {&a, &b, &e});
-  const auto s = scale_points<3>({&a, &b, &e}, true);
-  const auto q = static_cast<std::size_t>(k);
-  std::array<Z, 2> tq, h;
-  for (std::size_t j = 0; j < 2; ++j) {
-    const Z tx = s.c[j][0] - s.c[2][0], ty = s.c[j][1] - s.c[2][1], tz = s.c[j][2] - s.c[2][2];
-    const Z tw = s.w[j] - s.w[2];
-    tq[j] = s.c[j][q] - s.c[2][q];
-    h[j] = lifted_height(tx, ty, tz, tw);
-  }
-  return sign_int(lifted_det2(tq[0], h[0], tq[1], h[1]));
+  const PointRefs<3> pts{&a, &b, &e};
+  require_finite_points("collinear_power_test", pts);
+  const ScaleFinder f = find_scale(pts, true);
+  return dispatch(f.coordinate_difference_bits() + f.lifted_height_bits() + 1,
+                  [&](auto tag) { return collinear_eval<decltype(tag)>(pts, f.unit(), k); });
 }
 
 int squared_distance_difference_exact(const Point3& x, const Point3& p, const Point3& q) {
@@ -129,33 +218,29 @@ int squared_distance_difference_exact(const Point3& x, const Point3& p, const Po
 
 int power_difference_exact(const Point3& x, const WeightedPoint& p, const WeightedPoint& q) {
   const WeightedPoint wx{x, 0};
-  require_finite_points("compare_power_distance", {&wx, &p, &q});
-  const auto s = scale_points<3>({&wx, &p, &q}, true);
-  std::array<std::array<Z, 3>, 2> t;
-  for (std::size_t j = 0; j < 2; ++j) {
-    for (std::size_t i = 0; i < 3; ++i) t[j][i] = s.c[0][i] - s.c[j + 1][i];
-  }
-  return sign_int(power_difference(t[0][0], t[0][1], t[0][2], s.w[1], t[1][0], t[1][1],
-                                   t[1][2], s.w[2]));
+  const PointRefs<3> pts{&wx, &p, &q};
+  require_finite_points("compare_power_distance", pts);
+  const ScaleFinder f = find_scale(pts, true);
+  return dispatch(f.lifted_height_bits() + 2,
+                  [&](auto tag) { return power_difference_eval<decltype(tag)>(pts, f.unit()); });
 }
 
 int power_value_exact(const Point3& x, const WeightedPoint& p) {
   const WeightedPoint wx{x, 0};
-  require_finite_points("power_sign", {&wx, &p});
-  const auto s = scale_points<2>({&wx, &p}, true);
-  std::array<Z, 3> t;
-  for (std::size_t i = 0; i < 3; ++i) t[i] = s.c[0][i] - s.c[1][i];
-  return sign_int(power_value(t[0], t[1], t[2], s.w[1]));
+  const PointRefs<2> pts{&wx, &p};
+  require_finite_points("power_sign", pts);
+  const ScaleFinder f = find_scale(pts, true);
+  return dispatch(f.lifted_height_bits() + 1,
+                  [&](auto tag) { return power_value_eval<decltype(tag)>(pts, f.unit()); });
 }
 
 int ball_side_exact(const Point3& x, const Point3& centre, double r) {
   require_finite("side_of_ball", {x.x, x.y, x.z, centre.x, centre.y, centre.z, r});
-  // The radius is a length: it joins the coordinates' scale through a fake third point.
   const WeightedPoint wx{x, 0}, wc{centre, 0}, wr{{r, 0, 0}, 0};
-  const auto s = scale_points<3>({&wx, &wc, &wr}, false);
-  std::array<Z, 3> t;
-  for (std::size_t i = 0; i < 3; ++i) t[i] = s.c[0][i] - s.c[1][i];
-  return sign_int(ball_side_value(t[0], t[1], t[2], s.c[2][0]));
+  const PointRefs<3> pts{&wx, &wc, &wr};
+  const ScaleFinder f = find_scale(pts, false);
+  return dispatch(2 * f.coordinate_difference_bits() + 3,
+                  [&](auto tag) { return ball_side_eval<decltype(tag)>(pts, f.unit()); });
 }
 
 }  // namespace rstruct::predicates::detail

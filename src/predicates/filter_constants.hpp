@@ -14,17 +14,19 @@
 /// Semi-static filter: with D̃ the computed value and D the exact one, |D̃ − D| ≤ K · S
 /// where S is the product of column maxima named beside each constant, computed in
 /// floating point as written in filters.hpp with `bound_roundings` roundings (each may
-/// lose a factor 1 − u, which K absorbs). The filter decides only when |D̃| > K·S and
-/// every column maximum lies in [2^min_exponent, 2^max_exponent]: below, underflow could
-/// dominate (the proof bounds its share for maxima ≥ 2^min_exponent); above, an
-/// intermediate could overflow.
+/// lose a factor 1 − u, which K absorbs). The filter decides only when |D̃| > K·S, D̃ is
+/// finite and every column maximum is at least the guard's min_magnitude 2^-b. Below it
+/// underflow could dominate: the proof adds, for each product of degree d, the share
+/// 2⁻¹⁰⁷⁵·2^(b·d) of its absolute underflow error relative to the normalising product, and
+/// the guard also keeps K·S a normal number. Overflow needs no guard: with no divisions,
+/// an overflow anywhere leaves D̃ = ±inf or NaN (rejected), and an overflowing K·S = +inf
+/// never decides.
 
 namespace rstruct::predicates::detail::filter {
 
-/// Guard of one filter: the range of column maxima where its constant holds.
+/// Guard of one filter: where its constant holds.
 struct Guard {
   double min_magnitude;  ///< smallest allowed column maximum m_x, m_y, m_z (> 0)
-  double max_magnitude;  ///< largest allowed column maximum; weights up to its square
 };
 
 /// 2^k as a constant expression.
@@ -35,12 +37,12 @@ constexpr double pow2(int k) {
   return r;
 }
 
-/// Degree ≤ 3 predicates (orient3d, orient2d): maxima in [2^-300, 2^300].
-inline constexpr Guard kGuardDegree3{pow2(-300), pow2(300)};
-/// Degree 4 and 5 predicates (in-sphere, power tests): maxima in [2^-180, 2^200].
-inline constexpr Guard kGuardDegree5{pow2(-180), pow2(200)};
-/// Degree 2 predicates (distance and power comparisons): maxima in [2^-400, 2^400].
-inline constexpr Guard kGuardDegree2{pow2(-400), pow2(400)};
+/// Degree ≤ 3 predicates (orient3d, orient2d): column maxima ≥ 2^-300.
+inline constexpr Guard kGuardDegree3{pow2(-300)};
+/// Degree 4 and 5 predicates (in-sphere, power tests): column maxima ≥ 2^-180.
+inline constexpr Guard kGuardDegree5{pow2(-180)};
+/// Degree 2 predicates (distance and power comparisons): maxima ≥ 2^-400.
+inline constexpr Guard kGuardDegree2{pow2(-400)};
 
 /// orient3d: S = m_x·m_y·m_z, 3 roundings in the bound.
 inline constexpr double kOrient3d = 5.1071e-15;

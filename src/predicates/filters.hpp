@@ -22,7 +22,6 @@ inline constexpr int kAxisU[3] = {1, 2, 0};
 inline constexpr int kAxisV[3] = {2, 0, 1};
 
 inline double max2(double a, double b) { return a < b ? b : a; }
-inline double min2(double a, double b) { return a < b ? a : b; }
 inline double abs_max3(double a, double b, double c) {
   return max2(max2(std::fabs(a), std::fabs(b)), std::fabs(c));
 }
@@ -30,15 +29,26 @@ inline double abs_max4(double a, double b, double c, double d) {
   return max2(abs_max3(a, b, c), std::fabs(d));
 }
 
-/// ±1 if |value| > bound, else kUndecided (NaN never decides).
-inline int decide(double value, double bound) {
-  if (value > bound) return 1;
-  if (value < -bound) return -1;
-  return kUndecided;
+/// ±1 if `ok` and |value| > bound, else kUndecided (NaN never decides). Branch-free
+/// except for the rarely taken undecided case: the sign of a random input is
+/// unpredictable, and a mispredicted branch costs more than the whole filter.
+inline int decide(double value, double bound, bool ok = true) {
+  const int pos = value > bound;
+  const int neg = value < -bound;
+  return (static_cast<int>(ok) & (pos | neg)) != 0 ? pos - neg : kUndecided;
 }
 
-inline bool in_guard(double lo, double hi, const filter::Guard& g) {
-  return lo >= g.min_magnitude && hi <= g.max_magnitude;
+/// The guard of filter_constants.hpp: the smallest column maximum is at least the
+/// guard's minimum (so underflow stays negligible) and the computed value is finite (an
+/// overflow anywhere makes it ±inf or NaN, as there are no divisions; an overflowing
+/// bound is +inf and never decides). Bitwise &: no short-circuit branches.
+inline bool in_guard(double smallest_column_max, double value, const filter::Guard& g) {
+  return static_cast<bool>((smallest_column_max >= g.min_magnitude) &
+                           (std::fabs(value) <= 0x1.fffffffffffffp1023));
+}
+inline double min3(double a, double b, double c) {
+  const double ab = a < b ? a : b;
+  return ab < c ? ab : c;
 }
 
 inline int orient3d_filter(const Point3& a, const Point3& b, const Point3& c,
@@ -48,10 +58,8 @@ inline int orient3d_filter(const Point3& a, const Point3& b, const Point3& c,
   const double dx = d.x - a.x, dy = d.y - a.y, dz = d.z - a.z;
   const double mx = abs_max3(bx, cx, dx), my = abs_max3(by, cy, dy), mz = abs_max3(bz, cz, dz);
   const double value = det3(bx, by, bz, cx, cy, cz, dx, dy, dz);
-  if (!in_guard(min2(min2(mx, my), mz), max2(max2(mx, my), mz), filter::kGuardDegree3)) {
-    return kUndecided;
-  }
-  return decide(value, filter::kOrient3d * mx * my * mz);
+  return decide(value, filter::kOrient3d * mx * my * mz,
+                in_guard(min3(mx, my, mz), value, filter::kGuardDegree3));
 }
 
 /// Orientation of a, b, c projected on the coordinate plane that drops axis k.
@@ -61,8 +69,7 @@ inline int orient2d_filter(const Point3& a, const Point3& b, const Point3& c, in
   const double cu = c[u] - a[u], cv = c[v] - a[v];
   const double mu = max2(std::fabs(bu), std::fabs(cu)), mv = max2(std::fabs(bv), std::fabs(cv));
   const double value = minor2(bu, bv, cu, cv);
-  if (!in_guard(min2(mu, mv), max2(mu, mv), filter::kGuardDegree3)) return kUndecided;
-  return decide(value, filter::kOrient2d * mu * mv);
+  return decide(value, filter::kOrient2d * mu * mv, in_guard(mu < mv ? mu : mv, value, filter::kGuardDegree3));
 }
 
 /// Sign of −det[(p − e, |p − e|² − (w_p − w_e))] for p = a, b, c, d (power test; with
@@ -85,13 +92,12 @@ int lifted4_filter(const WeightedPoint& a, const WeightedPoint& b, const Weighte
                                 td.x, td.y, td.z, lifted_height(td.x, td.y, td.z, wd)};
   const double value = lifted_det4_negated(rows);
   const filter::Guard& g = filter::kGuardDegree5;
-  if (!in_guard(min2(min2(mx, my), mz), big, g)) return kUndecided;
+  const bool ok = in_guard(min3(mx, my, mz), value, g);
   if constexpr (weighted) {
     const double mw = abs_max4(wa, wb, wc, wd);
-    if (!(mw <= g.max_magnitude * g.max_magnitude)) return kUndecided;
-    return decide(value, filter::kPowerTest * mx * my * mz * max2(big * big, mw));
+    return decide(value, filter::kPowerTest * mx * my * mz * max2(big * big, mw), ok);
   } else {
-    return decide(value, filter::kInsphere * mx * my * mz * (big * big));
+    return decide(value, filter::kInsphere * mx * my * mz * (big * big), ok);
   }
 }
 
@@ -111,10 +117,8 @@ inline int coplanar_power_filter(const WeightedPoint& a, const WeightedPoint& b,
                           abs_max3(ta.z, tb.z, tc.z));
   const double mw = abs_max3(wa, wb, wc);
   const filter::Guard& g = filter::kGuardDegree5;
-  if (!in_guard(min2(mu, mv), big, g) || !(mw <= g.max_magnitude * g.max_magnitude)) {
-    return kUndecided;
-  }
-  return decide(value, filter::kCoplanarPower * mu * mv * max2(big * big, mw));
+  return decide(value, filter::kCoplanarPower * mu * mv * max2(big * big, mw),
+                in_guard(mu < mv ? mu : mv, value, g));
 }
 
 /// Sign of det[(a_q − e_q, h_a); (b_q − e_q, h_b)], h as above, q = axis k.
@@ -131,8 +135,8 @@ inline int collinear_power_filter(const WeightedPoint& a, const WeightedPoint& b
                           max2(std::fabs(ta.z), std::fabs(tb.z)));
   const double mw = max2(std::fabs(wa), std::fabs(wb));
   const filter::Guard& g = filter::kGuardDegree5;
-  if (!in_guard(mq, big, g) || !(mw <= g.max_magnitude * g.max_magnitude)) return kUndecided;
-  return decide(value, filter::kCollinearPower * mq * max2(big * big, mw));
+  return decide(value, filter::kCollinearPower * mq * max2(big * big, mw),
+                in_guard(mq, value, g));
 }
 
 inline int squared_distance_difference_filter(const Point3& x, const Point3& p,
@@ -140,8 +144,8 @@ inline int squared_distance_difference_filter(const Point3& x, const Point3& p,
   const Point3 tp = x - p, tq = x - q;
   const double value = squared_distance_difference(tp.x, tp.y, tp.z, tq.x, tq.y, tq.z);
   const double big = max2(abs_max3(tp.x, tp.y, tp.z), abs_max3(tq.x, tq.y, tq.z));
-  if (!in_guard(big, big, filter::kGuardDegree2)) return kUndecided;
-  return decide(value, filter::kSquaredDistanceDifference * (big * big));
+  return decide(value, filter::kSquaredDistanceDifference * (big * big),
+                in_guard(big, value, filter::kGuardDegree2));
 }
 
 inline int power_difference_filter(const Point3& x, const WeightedPoint& p,
@@ -151,8 +155,8 @@ inline int power_difference_filter(const Point3& x, const WeightedPoint& p,
   const double big = max2(abs_max3(tp.x, tp.y, tp.z), abs_max3(tq.x, tq.y, tq.z));
   const double mw = max2(std::fabs(p.w), std::fabs(q.w));
   const filter::Guard& g = filter::kGuardDegree2;
-  if (!in_guard(big, big, g) || !(mw <= g.max_magnitude * g.max_magnitude)) return kUndecided;
-  return decide(value, filter::kPowerDifference * max2(big * big, mw));
+  return decide(value, filter::kPowerDifference * max2(big * big, mw),
+                in_guard(big, value, g));
 }
 
 inline int power_value_filter(const Point3& x, const WeightedPoint& p) {
@@ -161,16 +165,16 @@ inline int power_value_filter(const Point3& x, const WeightedPoint& p) {
   const double big = abs_max3(t.x, t.y, t.z);
   const double mw = std::fabs(p.w);
   const filter::Guard& g = filter::kGuardDegree2;
-  if (!in_guard(big, big, g) || !(mw <= g.max_magnitude * g.max_magnitude)) return kUndecided;
-  return decide(value, filter::kPowerValue * max2(big * big, mw));
+  return decide(value, filter::kPowerValue * max2(big * big, mw),
+                in_guard(big, value, g));
 }
 
 inline int ball_side_filter(const Point3& x, const Point3& centre, double r) {
   const Point3 t = x - centre;
   const double value = ball_side_value(t.x, t.y, t.z, r);
   const double big = max2(abs_max3(t.x, t.y, t.z), std::fabs(r));
-  if (!in_guard(abs_max3(t.x, t.y, t.z), big, filter::kGuardDegree2)) return kUndecided;
-  return decide(value, filter::kBallSide * (big * big));
+  return decide(value, filter::kBallSide * (big * big),
+                in_guard(abs_max3(t.x, t.y, t.z), value, filter::kGuardDegree2));
 }
 
 }  // namespace rstruct::predicates::detail

@@ -20,7 +20,11 @@ namespace {
 /// Four weighted coplanar points with small integer data; weights often orthogonal to one
 /// circle (exactly degenerate), sometimes zero, sometimes cocircular points.
 std::array<WeightedPoint, 4> coplanar_case(std::mt19937_64& rng) {
-  std::uniform_int_distribution<int> small(-6, 6);
+  // Small integers (exact everywhere), or large ones (up to 2^24: the lifted heights and
+  // orthogonal weights round in double, so cases are nearly, not exactly, degenerate and
+  // the filter has to give up).
+  const bool large = rng() % 2 == 0;
+  std::uniform_int_distribution<int> small(large ? -(1 << 24) : -6, large ? 1 << 24 : 6);
   auto vec = [&] { return Vec3{double(small(rng)), double(small(rng)), double(small(rng))}; };
   Vec3 u = vec(), v = vec();
   while (squared_norm(cross(u, v)) == 0) {
@@ -30,10 +34,11 @@ std::array<WeightedPoint, 4> coplanar_case(std::mt19937_64& rng) {
   const auto pts = coplanar_points(rng, 4, vec(), u, v, 4);
   std::array<WeightedPoint, 4> p;
   const int kind = static_cast<int>(rng() % 3);
-  const Point3 z = pts[0] + double(small(rng)) * u + double(small(rng)) * v;
+  std::uniform_int_distribution<int> tiny(-6, 6);
+  const Point3 z = pts[0] + double(tiny(rng)) * u + double(tiny(rng)) * v;
   for (std::size_t i = 0; i < 4; ++i) {
     p[i].c = pts[i];
-    p[i].w = kind == 0 ? 0.0 : (kind == 1 ? double(small(rng)) : squared_distance(pts[i], z) - 3);
+    p[i].w = kind == 0 ? 0.0 : (kind == 1 ? double(tiny(rng)) : squared_distance(pts[i], z) - 3);
   }
   return p;
 }
@@ -70,18 +75,19 @@ TEST_CASE("coplanar power tests agree with the rational oracle") {
     // orientation).
     REQUIRE(pr::coplanar_power_test_sos(p[1], p[0], p[2], p[3], ids[1], ids[0], ids[2], ids[3]) == s);
   }
-  CHECK(zeros > 200);
+  CHECK(zeros > 100);
 }
 
 TEST_CASE("collinear power tests agree with the rational oracle") {
   const std::uint64_t seed = 0x5eed0006;
   INFO("seed " << seed);
   std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<int> small(-6, 6);
+  std::uniform_int_distribution<int> small(-6, 6), large(-(1 << 24), 1 << 24);
   int zeros = 0;
   for (int n = 0; n < 4000; ++n) {
     const Vec3 o{double(small(rng)), double(small(rng)), double(small(rng))};
     Vec3 u{double(small(rng)), double(small(rng)), double(small(rng))};
+    if (n % 4 == 2) u = {double(large(rng)), double(large(rng)), double(large(rng))};
     if (squared_norm(u) == 0) u = {0, 0, 1};
     const auto pts = collinear_points(rng, 3, o, u, 4);
     if (pts[0] == pts[1]) continue;

@@ -1,0 +1,223 @@
+// Benchmark of the predicates: ns per call of the filtered predicate on random inputs
+// (filter path) and on nearly degenerate inputs (exact path), next to a plain double
+// evaluation of the same determinant, with filter failure rates. Each figure is the
+// median of several runs; the machine may be shared, so compare ratios within one run.
+//
+// Usage: bench_predicates [calls_per_run (default 200000)] [runs (default 7)]
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "predicates/exact_stage.hpp"
+#include "predicates/filters.hpp"
+#include "predicates/polynomials.hpp"
+#include "rstruct/predicates/predicates.hpp"
+
+namespace {
+
+using rstruct::Point3;
+using rstruct::WeightedPoint;
+namespace pr = rstruct::predicates;
+namespace pd = rstruct::predicates::detail;
+
+/// Thread CPU time in ns: on a machine shared by several builds, wall time mostly
+/// measures the scheduler.
+double thread_cpu_ns() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) * 1e9 + double(ts.tv_nsec);
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+/// Minimum ns per call: on a loaded machine the least disturbed run.
+bool g_use_min = false;
+
+/// Median ns per call of body(i) over i in [0, calls), several runs.
+double time_ns(std::size_t calls, int runs, const std::function<long(std::size_t)>& body,
+               long& checksum) {
+  std::vector<double> ns;
+  for (int r = 0; r < runs; ++r) {
+    const double t0 = thread_cpu_ns();
+    long sum = 0;
+    for (std::size_t i = 0; i < calls; ++i) sum += body(i);
+    const double t1 = thread_cpu_ns();
+    checksum += sum;
+    ns.push_back((t1 - t0) /
+                 static_cast<double>(calls));
+  }
+  return g_use_min ? *std::min_element(ns.begin(), ns.end()) : median(ns);
+}
+
+double plain_orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  return pd::det3(b.x - a.x, b.y - a.y, b.z - a.z, c.x - a.x, c.y - a.y, c.z - a.z, d.x - a.x,
+                  d.y - a.y, d.z - a.z);
+}
+
+double plain_insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                      const Point3& e) {
+  const Point3 ta = a - e, tb = b - e, tc = c - e, td = d - e;
+  const pd::LiftedRows<double> r{ta.x, ta.y, ta.z, pd::squared_length(ta.x, ta.y, ta.z),
+                                 tb.x, tb.y, tb.z, pd::squared_length(tb.x, tb.y, tb.z),
+                                 tc.x, tc.y, tc.z, pd::squared_length(tc.x, tc.y, tc.z),
+                                 td.x, td.y, td.z, pd::squared_length(td.x, td.y, td.z)};
+  return pd::lifted_det4_negated(r);
+}
+
+int sgn(double v) { return (v > 0) - (v < 0); }
+
+struct Inputs {
+  std::vector<Point3> p;
+  std::vector<double> w;
+};
+
+Inputs random_inputs(std::size_t n, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> d(-1, 1);
+  Inputs in;
+  for (std::size_t i = 0; i < n + 5; ++i) {
+    in.p.push_back({d(rng), d(rng), d(rng)});
+    in.w.push_back(0.1 * d(rng) * d(rng));
+  }
+  return in;
+}
+
+/// Integer points on the sphere of radius 65 (exactly cospherical), each coordinate then
+/// moved by one ulp of 2^-20 with probability 1/2 after scaling by 2^-10: cospherical to
+/// about 1e-16 relative, so the filter must give up.
+Inputs near_degenerate_inputs(std::size_t n, std::mt19937_64& rng) {
+  std::vector<Point3> sphere;
+  for (int x = -65; x <= 65; ++x)
+    for (int y = -65; y <= 65; ++y)
+      for (int z = -65; z <= 65; ++z)
+        if (x * x + y * y + z * z == 4225) sphere.push_back({double(x), double(y), double(z)});
+  std::uniform_int_distribution<std::size_t> pick(0, sphere.size() - 1);
+  Inputs in;
+  for (std::size_t i = 0; i < n + 5; ++i) {
+    Point3 q = sphere[pick(rng)] * 0x1p-10;
+    if (rng() % 2 == 0 && q.x != 0) q.x = std::nextafter(q.x, 2.0);
+    in.p.push_back(q);
+    in.w.push_back(0);
+  }
+  return in;
+}
+
+struct Row {
+  std::string name;
+  double ns_random, ns_plain, ns_near, failure_rate;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::size_t calls = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 200000;
+  const int runs = argc > 2 ? std::atoi(argv[2]) : 7;
+  g_use_min = argc > 3 && std::string(argv[3]) == "min";
+  std::mt19937_64 rng(12345);
+  const Inputs rnd = random_inputs(calls, rng);
+  const Inputs near = near_degenerate_inputs(calls, rng);
+  long checksum = 0;
+  auto P = [](const Inputs& in, std::size_t i) -> const Point3& { return in.p[i]; };
+  auto W = [](const Inputs& in, std::size_t i) { return WeightedPoint{in.p[i], in.w[i]}; };
+
+  std::vector<Row> rows;
+  {
+    Row r{"orient3d", 0, 0, 0, 0};
+    r.ns_random = time_ns(calls, runs, [&](std::size_t i) {
+      return long(pr::orient3d(P(rnd, i), P(rnd, i + 1), P(rnd, i + 2), P(rnd, i + 3)));
+    }, checksum);
+    r.ns_plain = time_ns(calls, runs, [&](std::size_t i) {
+      return long(sgn(plain_orient3d(P(rnd, i), P(rnd, i + 1), P(rnd, i + 2), P(rnd, i + 3))));
+    }, checksum);
+    // Near-degenerate for orient3d: four points of one plane moved by an ulp.
+    r.ns_near = time_ns(calls / 20, runs, [&](std::size_t i) {
+      const Point3 a = P(near, i), b = P(near, i + 1), c = P(near, i + 2);
+      Point3 d = a + (b - a) * 0.5;  // exactly on segment ab up to rounding
+      d.z = std::nextafter(d.z, 1e300);
+      return long(pr::orient3d(a, b, c, d));
+    }, checksum);
+    long undecided = 0;
+    for (std::size_t i = 0; i < calls; ++i) {
+      undecided += pd::orient3d_filter(P(rnd, i), P(rnd, i + 1), P(rnd, i + 2), P(rnd, i + 3)) ==
+                   pd::kUndecided;
+    }
+    r.failure_rate = double(undecided) / double(calls);
+    rows.push_back(r);
+  }
+  {
+    Row r{"insphere", 0, 0, 0, 0};
+    r.ns_random = time_ns(calls, runs, [&](std::size_t i) {
+      return long(pr::insphere(P(rnd, i), P(rnd, i + 1), P(rnd, i + 2), P(rnd, i + 3),
+                               P(rnd, i + 4)));
+    }, checksum);
+    r.ns_plain = time_ns(calls, runs, [&](std::size_t i) {
+      return long(sgn(plain_insphere(P(rnd, i), P(rnd, i + 1), P(rnd, i + 2), P(rnd, i + 3),
+                                     P(rnd, i + 4))));
+    }, checksum);
+    r.ns_near = time_ns(calls / 20, runs, [&](std::size_t i) {
+      return long(pr::insphere(P(near, i), P(near, i + 1), P(near, i + 2), P(near, i + 3),
+                               P(near, i + 4)));
+    }, checksum);
+    long undecided = 0;
+    for (std::size_t i = 0; i < calls; ++i) {
+      undecided += pd::lifted4_filter<false>(W(rnd, i), W(rnd, i + 1), W(rnd, i + 2),
+                                             W(rnd, i + 3), W(rnd, i + 4)) == pd::kUndecided;
+    }
+    r.failure_rate = double(undecided) / double(calls);
+    rows.push_back(r);
+  }
+  {
+    Row r{"power_test", 0, 0, 0, 0};
+    r.ns_random = time_ns(calls, runs, [&](std::size_t i) {
+      return long(pr::power_test(W(rnd, i), W(rnd, i + 1), W(rnd, i + 2), W(rnd, i + 3),
+                                 W(rnd, i + 4)));
+    }, checksum);
+    r.ns_plain = -1;
+    r.ns_near = time_ns(calls / 20, runs, [&](std::size_t i) {
+      return long(pr::power_test(W(near, i), W(near, i + 1), W(near, i + 2), W(near, i + 3),
+                                 W(near, i + 4)));
+    }, checksum);
+    long undecided = 0;
+    for (std::size_t i = 0; i < calls; ++i) {
+      undecided += pd::lifted4_filter<true>(W(rnd, i), W(rnd, i + 1), W(rnd, i + 2),
+                                            W(rnd, i + 3), W(rnd, i + 4)) == pd::kUndecided;
+    }
+    r.failure_rate = double(undecided) / double(calls);
+    rows.push_back(r);
+  }
+  {
+    Row r{"compare_squared_distance", 0, 0, 0, 0};
+    r.ns_random = time_ns(calls, runs, [&](std::size_t i) {
+      return long(pr::compare_squared_distance(P(rnd, i), P(rnd, i + 1), P(rnd, i + 2)));
+    }, checksum);
+    r.ns_plain = time_ns(calls, runs, [&](std::size_t i) {
+      return long(sgn(rstruct::squared_distance(P(rnd, i), P(rnd, i + 1)) -
+                      rstruct::squared_distance(P(rnd, i), P(rnd, i + 2))));
+    }, checksum);
+    r.ns_near = time_ns(calls / 20, runs, [&](std::size_t i) {
+      return long(pr::compare_squared_distance({0, 0, 0}, P(near, i), P(near, i + 1)));
+    }, checksum);
+    r.failure_rate = 0;
+    rows.push_back(r);
+  }
+  std::printf("# bench_predicates: %zu calls/run, %s of %d runs (shared machine: compare "
+              "ratios only)\n", calls, g_use_min ? "minimum" : "median", runs);
+  std::printf("%-26s %12s %12s %8s %14s %8s %14s\n", "predicate", "filtered_ns", "plain_ns",
+              "ratio", "near_degen_ns", "x_filt", "filter_fail");
+  for (const Row& r : rows) {
+    std::printf("%-26s %12.2f %12.2f %8.2f %14.1f %8.1f %14.3g\n", r.name.c_str(), r.ns_random,
+                r.ns_plain, r.ns_plain > 0 ? r.ns_random / r.ns_plain : 0.0, r.ns_near,
+                r.ns_near / r.ns_random, r.failure_rate);
+  }
+  std::printf("checksum %ld\n", checksum);
+  return 0;
+}
