@@ -71,7 +71,7 @@ enum Stage { kDelaunay, kDelaunayBox, kPoles, kLabels, kDhat, kCover, kStages };
 const char* const kNames[kStages] = {"delaunay", "del+box", "poles", "labels", "dhat", "cover"};
 
 struct Counts {
-  std::size_t poles = 0, inner = 0, bad = 0, entries = 0;
+  std::size_t poles = 0, inner = 0, bad = 0, entries = 0, pairs = 0;
 };
 
 /// One run of every stage, the way analyse_poles chains them, timing each.
@@ -107,7 +107,7 @@ Counts run_once(const std::vector<Point3>& samples, double rho_tilde, unsigned t
   const auto sets = poles::covering_sets(balls, samples, threads);
   t_cover.stop(wall[kCover], cpu[kCover]);
   return {pole_set.size(), labeling.inner, labeling.unlabelled + labeling.contradictory,
-          sets.entry_count()};
+          sets.entry_count(), labeling.pairs_examined};
 }
 
 std::vector<std::size_t> parse_sizes(const std::string& text) {
@@ -151,8 +151,10 @@ int main(int argc, char** argv) {
                           median(times[kDhat]) + median(times[kCover]);
       std::printf(" ours=%.3f ratio=%.2f\n", ours, ours / median(times[kDelaunay]));
     }
-    std::printf("n=%zu checksum: poles=%zu inner=%zu unlabelled+contradictory=%zu entries=%zu\n",
-                n, counts.poles, counts.inner, counts.bad, counts.entries);
+    std::printf(
+        "n=%zu checksum: poles=%zu inner=%zu unlabelled+contradictory=%zu entries=%zu "
+        "label_pairs=%zu\n",
+        n, counts.poles, counts.inner, counts.bad, counts.entries, counts.pairs);
     std::fflush(stdout);
   }
   return 0;
