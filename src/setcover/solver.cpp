@@ -157,6 +157,29 @@ ComponentResult solve_component(const Instance& inst, const Budget& budget, cons
   return out;
 }
 
+/// Fills the certificate (rounded multipliers, exact claims) and the certified figures.
+void attach_certificate(const Instance& inst, const std::vector<double>& u, Solution& sol) {
+  Certificate& cert = sol.certificate;
+  cert.num_rows = inst.num_rows();
+  cert.num_cols = inst.num_cols();
+  cert.unicost = inst.is_unicost();
+  cert.cover = sol.columns;
+  cert.multipliers = to_fixed_point(u, cert.scale);
+  sol.lower_bound = certified_lower_bound(inst, cert);
+  double claim = sol.lower_bound;
+  if (!cert.unicost && !inst.has_integer_costs()) {
+    // Costs read from decimal text are within 2^-53 relative of their doubles, which moves L
+    // by at most 2^-53 Σ c_j: claim that much less so the verifier's exact reading agrees.
+    double total = 0.0;
+    for (double c : inst.costs()) total += c;
+    claim = std::nextafter(claim - std::ldexp(total, -50), -INFINITY);
+  }
+  cert.bound_claim = exact_rational_text(claim);
+  cert.cost_claim = exact_cost_text(inst, sol.columns, cert.unicost);
+  sol.gap = sol.cost > 0 ? (sol.cost - sol.lower_bound) / sol.cost : 0.0;
+  sol.optimal = sol.lower_bound >= sol.cost;
+}
+
 }  // namespace
 
 Solution solve(const Instance& inst, const SolverOptions& options) {
@@ -213,25 +236,7 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
   sol.cost = inst.cost_of(cover);
   sol.stats.greedy_cost = greedy_cost;
   const double t_cert = clock.seconds();
-  Certificate& cert = sol.certificate;
-  cert.num_rows = inst.num_rows();
-  cert.num_cols = inst.num_cols();
-  cert.unicost = inst.is_unicost();
-  cert.cover = cover;
-  cert.multipliers = to_fixed_point(u, cert.scale);
-  sol.lower_bound = certified_lower_bound(inst, cert);
-  double claim = sol.lower_bound;
-  if (!cert.unicost && !inst.has_integer_costs()) {
-    // Costs read from decimal text are within 2^-53 relative of their doubles, which moves L
-    // by at most 2^-53 Σ c_j: claim that much less so the verifier's exact reading agrees.
-    double total = 0.0;
-    for (double c : inst.costs()) total += c;
-    claim = std::nextafter(claim - std::ldexp(total, -50), -INFINITY);
-  }
-  cert.bound_claim = exact_rational_text(claim);
-  cert.cost_claim = exact_cost_text(inst, cover, cert.unicost);
-  sol.gap = sol.cost > 0 ? (sol.cost - sol.lower_bound) / sol.cost : 0.0;
-  sol.optimal = sol.lower_bound >= sol.cost;
+  attach_certificate(inst, u, sol);
   sol.proven_optimal = sol.optimal || all_proven;
   sol.stats.certificate_seconds = clock.seconds() - t_cert;
   sol.stats.seconds = clock.seconds();
