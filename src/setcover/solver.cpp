@@ -132,22 +132,27 @@ ComponentResult solve_component(const Instance& inst, const Budget& budget, cons
   st.bound = detail::lagrangian_bound(inst, st.u);
   // Coordinate ascent first: a few O(entries) sweeps give a good bound on large sparse
   // instances, where each subgradient iteration is as expensive as a sweep.
-  detail::coordinate_ascent(inst, st, 5, t0 + 0.2 * std::max(0.0, budget.deadline - t0), clock);
+  if (clock.seconds() < budget.deadline) {
+    detail::coordinate_ascent(inst, st, 5, t0 + 0.2 * std::max(0.0, budget.deadline - t0), clock);
+  }
   const double now = clock.seconds();
   out.greedy_seconds = now - t0;
   detail::SubgradientOptions so;
   so.max_iterations = budget.subgradient_iterations;
   so.deadline = now + 0.3 * std::max(0.0, budget.deadline - now);
   const double before = st.cover_cost;
-  detail::subgradient(inst, st, so, clock);
-  detail::coordinate_ascent(inst, st, 20, so.deadline, clock);
+  // Past the deadline only the mandatory work (a cover, multipliers) is done.
+  if (clock.seconds() < so.deadline) {
+    detail::subgradient(inst, st, so, clock);
+    detail::coordinate_ascent(inst, st, 20, so.deadline, clock);
+  }
   if (st.cover_cost < before) out.seconds_to_best = clock.seconds();
   out.subgradient_iterations = st.iterations;
   const double t1 = clock.seconds();
   out.subgradient_seconds = t1 - now;
   if (detail::bound_closes_gap(inst, st.bound, st.cover_cost)) {
     out.proven = true;
-  } else {
+  } else if (inst.num_cols() <= kExactColumns || clock.seconds() < budget.deadline) {
     improve_by_local_search(inst, st, budget, clock, out);
   }
   out.local_search_seconds = clock.seconds() - t1;
