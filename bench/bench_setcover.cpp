@@ -39,6 +39,7 @@ struct Args {
   bool geometric = false;
   double geometric_limit = 2.0;
   std::int32_t samples = 100000;
+  std::int64_t ls_iterations = 0;  // 0: time limit only
   double only_rho = 0.0;  // 0: both 0.03 and 0.1
   int only_shape = -1;    // -1: torus and double torus
 };
@@ -97,6 +98,7 @@ void run_orlib(const Args& args) {
       const Instance inst = mode == 0 ? weighted : weighted.with_unit_costs();
       SolverOptions opt;
       opt.time_limit = mode == 0 ? args.weighted_limit : args.unicost_limit;
+      opt.max_local_search_iterations = args.ls_iterations;
       opt.seed = args.seed;
       const Solution sol = solve(inst, opt);
       const fs::path cert = fs::temp_directory_path() / ("bench_setcover_" + name + ".cert");
@@ -243,6 +245,7 @@ int main(int argc, char** argv) {
     else if (a == "--geometric-limit") args.geometric_limit = std::stod(value());
     else if (a == "--samples") args.samples = std::stoi(value());
     else if (a == "--rho") args.only_rho = std::stod(value());
+    else if (a == "--ls-iterations") args.ls_iterations = std::stoll(value());
     else if (a == "--shape") args.only_shape = std::stoi(value());
     else {
       std::fprintf(stderr, "unknown argument %s\n", a.c_str());

@@ -12,7 +12,8 @@ constexpr SimplexIndex kNone = std::numeric_limits<SimplexIndex>::max();
 
 class Collapser {
  public:
-  explicit Collapser(const SimplicialComplex& complex) : k_(complex), cof_(complex) {
+  Collapser(const SimplicialComplex& complex, CollapseOrder order)
+      : k_(complex), cof_(complex), order_(order) {
     for (int d = 0; d < 4; ++d) {
       alive_[d].assign(k_.size(d), true);
       coface_count_[d].assign(k_.size(d), 0);
@@ -31,8 +32,7 @@ class Collapser {
       int d = 2;
       while (d >= 0 && queue_[d].empty()) --d;
       if (d < 0) break;
-      const SimplexIndex sigma = queue_[d].front();
-      queue_[d].pop_front();
+      const SimplexIndex sigma = take(d);
       const SimplexIndex tau = free_coface(d, sigma);
       if (tau == kNone) continue;
       remove(d + 1, tau);
@@ -46,6 +46,20 @@ class Collapser {
   }
 
  private:
+  /// Next candidate of dimension d, oldest (breadth-first) or newest (depth-first) first.
+  SimplexIndex take(int d) {
+    auto& queue = queue_[d];
+    SimplexIndex s = 0;
+    if (order_ == CollapseOrder::depth_first) {
+      s = queue.back();
+      queue.pop_back();
+    } else {
+      s = queue.front();
+      queue.pop_front();
+    }
+    return s;
+  }
+
   /// The only coface of sigma if sigma is free, else kNone.
   SimplexIndex free_coface(int d, SimplexIndex sigma) const {
     if (!alive_[d][sigma] || coface_count_[d][sigma] != 1) return kNone;
@@ -74,6 +88,7 @@ class Collapser {
 
   const SimplicialComplex& k_;
   CofaceIndex cof_;
+  CollapseOrder order_;
   std::array<std::vector<bool>, 4> alive_;
   std::array<std::vector<std::uint32_t>, 4> coface_count_;
   std::array<std::deque<SimplexIndex>, 3> queue_;
@@ -81,8 +96,8 @@ class Collapser {
 
 }  // namespace
 
-CollapseResult collapse_free_faces(const SimplicialComplex& complex) {
-  return Collapser(complex).run();
+CollapseResult collapse_free_faces(const SimplicialComplex& complex, CollapseOrder order) {
+  return Collapser(complex, order).run();
 }
 
 }  // namespace rstruct::complex

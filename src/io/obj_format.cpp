@@ -39,7 +39,7 @@ void read_vertex(Tokens& tokens, ObjState& state, const LineReader& lines) {
   }
   Point3 p;
   std::string_view token;
-  const std::string what = "vertex " + std::to_string(state.mesh.vertices.size() + 1);
+  const auto what = [&] { return "vertex " + std::to_string(state.mesh.vertices.size() + 1); };
   for (std::size_t axis = 0; axis < 3; ++axis) {
     tokens.next(token);
     p[axis] = parse_finite_double(token, lines, what);
@@ -50,7 +50,8 @@ void read_vertex(Tokens& tokens, ObjState& state, const LineReader& lines) {
 std::uint32_t face_index(std::string_view token, ObjState& state, const LineReader& lines) {
   const std::string_view index_part = token.substr(0, token.find('/'));
   const std::int64_t index =
-      parse_integer(index_part, -kMaxIndex, kMaxIndex, lines, "face vertex " + quoted(token));
+      parse_integer(index_part, -kMaxIndex, kMaxIndex, lines,
+                    [&] { return "face vertex " + quoted(token); });
   const auto count = static_cast<std::int64_t>(state.mesh.vertices.size());
   if (index == 0) lines.fail("face vertex index 0 (OBJ indices start at 1)");
   if (index < 0) {

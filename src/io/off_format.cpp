@@ -83,18 +83,18 @@ void read_off_face(std::string_view line, std::uint64_t index, TriangleMesh& mes
   Tokens tokens(line);
   std::string_view token;
   tokens.next(token);
-  const std::string what = "face " + std::to_string(index);
-  const std::int64_t n = parse_integer(token, 0, kMaxCount, lines, what + " size");
-  if (n < 3) lines.fail(what + " has " + std::to_string(n) + " vertices (at least 3 needed)");
+  const auto what = [index] { return "face " + std::to_string(index); };
+  const std::int64_t n = parse_integer(token, 0, kMaxCount, lines, [&] { return what() + " size"; });
+  if (n < 3) lines.fail(what() + " has " + std::to_string(n) + " vertices (at least 3 needed)");
   if (static_cast<std::uint64_t>(n) > tokens.count_left()) {
-    lines.fail(what + " declares " + std::to_string(n) + " vertices but lists fewer");
+    lines.fail(what() + " declares " + std::to_string(n) + " vertices but lists fewer");
   }
   const auto nv = static_cast<std::int64_t>(mesh.vertices.size());
   std::uint32_t first = 0, previous = 0;
   for (std::int64_t k = 0; k < n; ++k) {
     tokens.next(token);
     const auto v = static_cast<std::uint32_t>(
-        parse_integer(token, 0, nv - 1, lines, what + " vertex index"));
+        parse_integer(token, 0, nv - 1, lines, [&] { return what() + " vertex index"; }));
     if (k == 0) first = v;
     if (k >= 2) mesh.faces.push_back({first, previous, v});
     previous = v;
@@ -122,7 +122,7 @@ TriangleMesh read_off(std::string_view bytes, const std::string& name) {
     std::string_view token;
     for (std::size_t axis = 0; axis < 3; ++axis) {
       tokens.next(token);
-      p[axis] = parse_finite_double(token, lines, "vertex " + std::to_string(i));
+      p[axis] = parse_finite_double(token, lines, [i] { return "vertex " + std::to_string(i); });
     }
     mesh.vertices.push_back(p);
   }

@@ -156,7 +156,7 @@ class AsciiSource {
   double scalar(PlyType type) {
     const std::string_view token = next_token();
     if (ply_type_is_integer(type)) return static_cast<double>(integer_of(token, type));
-    return parse_finite_double(token, lines_, describe(*element_, index_));
+    return parse_finite_double(token, lines_, [this] { return describe(*element_, index_); });
   }
   std::int64_t integer(PlyType type) { return integer_of(next_token(), type); }
   void reserve_list(std::int64_t n, PlyType) {
@@ -186,8 +186,9 @@ class AsciiSource {
       case PlyType::int32: lo = INT32_MIN, hi = INT32_MAX; break;
       default: hi = UINT32_MAX; break;
     }
-    return parse_integer(token, lo, hi, lines_,
-                         describe(*element_, index_) + " (" + ply_type_name(type) + " value)");
+    return parse_integer(token, lo, hi, lines_, [this, type] {
+      return describe(*element_, index_) + " (" + ply_type_name(type) + " value)";
+    });
   }
 
   LineReader lines_;

@@ -116,39 +116,43 @@ std::string_view without_plus(std::string_view token) {
 
 }  // namespace
 
-double parse_finite_double(std::string_view token, const LineReader& where,
-                           const std::string& what) {
+NumberStatus parse_double(std::string_view token, double& value) {
   const std::string_view digits = without_plus(token);
-  double value = 0;
   const char* const end = digits.data() + digits.size();
   const auto [ptr, ec] = std::from_chars(digits.data(), end, value);
-  if (ec == std::errc::result_out_of_range) {
-    where.fail(what + ": number " + quoted(token) + " is out of the range of double");
-  }
-  if (ec != std::errc() || ptr != end) {
-    where.fail(what + ": expected a number, found " + quoted(token));
-  }
-  if (!std::isfinite(value)) {
-    where.fail(what + ": non-finite value " + quoted(token) + " (NaN/Inf are not allowed)");
-  }
-  return value;
+  if (ec == std::errc::result_out_of_range) return NumberStatus::out_of_range;
+  if (ec != std::errc() || ptr != end) return NumberStatus::not_a_number;
+  return std::isfinite(value) ? NumberStatus::ok : NumberStatus::not_finite;
 }
 
-std::int64_t parse_integer(std::string_view token, std::int64_t lo, std::int64_t hi,
-                           const LineReader& where, const std::string& what) {
+NumberStatus parse_int(std::string_view token, std::int64_t lo, std::int64_t hi,
+                       std::int64_t& value) {
   const std::string_view digits = without_plus(token);
-  std::int64_t value = 0;
   const char* const end = digits.data() + digits.size();
   const auto [ptr, ec] = std::from_chars(digits.data(), end, value);
-  if (ec == std::errc::result_out_of_range || (ec == std::errc() && ptr == end &&
-                                               (value < lo || value > hi))) {
-    where.fail(what + ": integer " + quoted(token) + " is outside [" + std::to_string(lo) +
-               ", " + std::to_string(hi) + "]");
+  if (ec == std::errc::result_out_of_range) return NumberStatus::out_of_range;
+  if (ec != std::errc() || ptr != end) return NumberStatus::not_a_number;
+  return value < lo || value > hi ? NumberStatus::out_of_range : NumberStatus::ok;
+}
+
+void fail_double(NumberStatus status, std::string_view token, const LineReader& where,
+                 const std::string& what) {
+  switch (status) {
+    case NumberStatus::out_of_range:
+      where.fail(what + ": number " + quoted(token) + " is out of the range of double");
+    case NumberStatus::not_finite:
+      where.fail(what + ": non-finite value " + quoted(token) + " (NaN/Inf are not allowed)");
+    default: where.fail(what + ": expected a number, found " + quoted(token));
   }
-  if (ec != std::errc() || ptr != end) {
-    where.fail(what + ": expected an integer, found " + quoted(token));
+}
+
+void fail_int(NumberStatus status, std::string_view token, std::int64_t lo, std::int64_t hi,
+              const LineReader& where, const std::string& what) {
+  if (status == NumberStatus::out_of_range) {
+    where.fail(what + ": integer " + quoted(token) + " is outside [" + std::to_string(lo) + ", " +
+               std::to_string(hi) + "]");
   }
-  return value;
+  where.fail(what + ": expected an integer, found " + quoted(token));
 }
 
 void append_double(std::string& out, double value) {

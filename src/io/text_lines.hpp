@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 namespace rstruct::io::detail {
 
@@ -69,15 +70,51 @@ class Tokens {
 /// Removes `comment` and everything after it (comment 0: nothing is removed).
 std::string_view strip_comment(std::string_view line, char comment);
 
-/// Parses the whole token as a finite double ("+" sign allowed, no hexfloat).
-/// \throws InvalidInput via `where` naming `what` if it is not a number, is out of the range
-/// of double, or is NaN/Inf.
-double parse_finite_double(std::string_view token, const LineReader& where, const std::string& what);
+/// How parsing a number token went.
+enum class NumberStatus { ok, not_a_number, out_of_range, not_finite };
 
+/// Parses the whole token as a finite double ("+" sign allowed, no hexfloat).
+NumberStatus parse_double(std::string_view token, double& value);
 /// Parses the whole token as a decimal integer in [lo, hi].
-/// \throws InvalidInput via `where` naming `what` otherwise.
+NumberStatus parse_int(std::string_view token, std::int64_t lo, std::int64_t hi,
+                       std::int64_t& value);
+
+/// Throws InvalidInput via `where`: "what: <problem with token>".
+[[noreturn]] void fail_double(NumberStatus status, std::string_view token,
+                              const LineReader& where, const std::string& what);
+[[noreturn]] void fail_int(NumberStatus status, std::string_view token, std::int64_t lo,
+                           std::int64_t hi, const LineReader& where, const std::string& what);
+
+/// `what` of an error message: a string, or a callable building it (so that the hot path
+/// builds no strings).
+template <class What>
+std::string describe_what(const What& what) {
+  if constexpr (std::is_invocable_v<const What&>) {
+    return what();
+  } else {
+    return std::string(what);
+  }
+}
+
+/// parse_double, throwing InvalidInput naming `what` (not a number, out of the range of
+/// double, NaN/Inf).
+template <class What>
+double parse_finite_double(std::string_view token, const LineReader& where, const What& what) {
+  double value = 0;
+  const NumberStatus status = parse_double(token, value);
+  if (status != NumberStatus::ok) fail_double(status, token, where, describe_what(what));
+  return value;
+}
+
+/// parse_int, throwing InvalidInput naming `what`.
+template <class What>
 std::int64_t parse_integer(std::string_view token, std::int64_t lo, std::int64_t hi,
-                           const LineReader& where, const std::string& what);
+                           const LineReader& where, const What& what) {
+  std::int64_t value = 0;
+  const NumberStatus status = parse_int(token, lo, hi, value);
+  if (status != NumberStatus::ok) fail_int(status, token, lo, hi, where, describe_what(what));
+  return value;
+}
 
 /// Appends the shortest decimal form of `value` that reads back to the same double.
 void append_double(std::string& out, double value);

@@ -26,7 +26,8 @@ TriangleMesh read_xyz(std::string_view bytes, const std::string& name,
     if (mesh.vertices.size() >= std::numeric_limits<std::uint32_t>::max()) {
       lines.fail("more than 2^32 - 1 points are not supported");
     }
-    const std::string what = "point " + std::to_string(mesh.vertices.size());
+    const std::size_t index = mesh.vertices.size();
+    const auto what = [index] { return "point " + std::to_string(index); };
     std::string_view token;
     Point3 p;
     for (std::size_t axis = 0; axis < 3; ++axis) {
@@ -36,7 +37,7 @@ TriangleMesh read_xyz(std::string_view bytes, const std::string& name,
     mesh.vertices.push_back(p);
     if (columns == 4) {
       tokens.next(token);
-      fourth.push_back(parse_finite_double(token, lines, what + " " + fourth_column));
+      fourth.push_back(parse_finite_double(token, lines, [&] { return what() + " " + fourth_column; }));
     }
   }
   require_vertices(mesh, name);

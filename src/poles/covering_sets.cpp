@@ -8,6 +8,7 @@
 
 #include "parallel_blocks.hpp"
 #include "point_kd_tree.hpp"
+#include "spatial_order.hpp"
 #include "rstruct/core/error.hpp"
 #include "rstruct/predicates/predicates.hpp"
 
@@ -38,26 +39,26 @@ bool covers(const Ball& ball, const Point3& p) {
   return predicates::side_of_ball(p, ball.c, ball.r) != Sign::positive;
 }
 
-/// Columns [begin, end): offsets relative to this block, rows appended to `rows`.
+/// The columns at positions [begin, end) of `order`: their rows appended to `rows`, and for
+/// each such column j its size and its start in `rows` recorded in size[j], start[j].
 struct Block {
-  std::vector<std::uint64_t> sizes;
   std::vector<std::uint32_t> rows;
 };
 
 void cover_block(const detail::PointKdTree& tree, std::span<const Ball> balls,
-                 std::span<const Point3> points, std::size_t begin, std::size_t end,
-                 Block& block) {
+                 std::span<const Point3> points, std::span<const std::uint32_t> order,
+                 Block& block, std::vector<std::uint64_t>& size,
+                 std::vector<std::uint64_t>& start) {
   std::vector<std::uint32_t> candidates;
-  block.sizes.reserve(end - begin);
-  for (std::size_t j = begin; j < end; ++j) {
+  for (const std::uint32_t j : order) {
     candidates.clear();
     tree.candidates_within(balls[j].c, balls[j].r, candidates);
     std::sort(candidates.begin(), candidates.end());
-    const std::size_t before = block.rows.size();
+    start[j] = block.rows.size();
     for (const std::uint32_t i : candidates) {
       if (covers(balls[j], points[i])) block.rows.push_back(i);
     }
-    block.sizes.push_back(block.rows.size() - before);
+    size[j] = block.rows.size() - start[j];
   }
 }
 
@@ -103,24 +104,32 @@ CoveringSets covering_sets(std::span<const Ball> balls, std::span<const Point3> 
   }
   const detail::PointKdTree tree(points);
   const unsigned t = thread_count(threads, balls.size());
+  // Columns in Morton order of their centres, so that consecutive searches stay local;
+  // the result is assembled in column order afterwards.
+  std::vector<Point3> centres(balls.size());
+  for (std::size_t j = 0; j < balls.size(); ++j) centres[j] = balls[j].c;
+  const std::vector<std::uint32_t> order = detail::morton_order(centres);
+  centres = {};
   std::vector<Block> blocks(t);
+  std::vector<std::uint64_t> size(balls.size()), start(balls.size());
+  std::vector<std::uint32_t> block_of(balls.size());
   const std::size_t chunk = (balls.size() + t - 1) / t;
-  auto run = [&](unsigned k) {
+  detail::run_blocks(t, [&](unsigned k) {
     const std::size_t begin = std::min(balls.size(), k * chunk);
     const std::size_t end = std::min(balls.size(), begin + chunk);
-    cover_block(tree, balls, points, begin, end, blocks[k]);
-  };
-  detail::run_blocks(t, run);
-  std::size_t total = 0;
-  for (const Block& block : blocks) total += block.rows.size();
-  sets.rows.reserve(total);
-  sets.column_offsets.reserve(balls.size() + 1);
-  for (Block& block : blocks) {
-    for (const std::uint64_t size : block.sizes) {
-      sets.column_offsets.push_back(sets.column_offsets.back() + size);
-    }
-    sets.rows.insert(sets.rows.end(), block.rows.begin(), block.rows.end());
-    block = Block{};
+    const std::span<const std::uint32_t> mine(order.data() + begin, end - begin);
+    for (const std::uint32_t j : mine) block_of[j] = k;
+    cover_block(tree, balls, points, mine, blocks[k], size, start);
+  });
+  sets.column_offsets.resize(balls.size() + 1);
+  for (std::size_t j = 0; j < balls.size(); ++j) {
+    sets.column_offsets[j + 1] = sets.column_offsets[j] + size[j];
+  }
+  sets.rows.resize(sets.column_offsets.back());
+  for (std::size_t j = 0; j < balls.size(); ++j) {
+    const auto& source = blocks[block_of[j]].rows;
+    std::copy_n(source.begin() + static_cast<std::ptrdiff_t>(start[j]), size[j],
+                sets.rows.begin() + static_cast<std::ptrdiff_t>(sets.column_offsets[j]));
   }
   return sets;
 }

@@ -3,6 +3,8 @@
 // covering sets. Searches here only *propose* candidates: nanoflann's distances are plain
 // floating point, so every radius query is run with a slightly inflated radius and the
 // caller decides membership with an exact predicate (predicates::side_of_ball).
+// The tree keeps its own copy of the points in Morton order, so that a leaf's points are
+// contiguous in memory; every index it returns is an index into the caller's span.
 
 #include <cstdint>
 #include <span>
@@ -11,18 +13,22 @@
 #include <nanoflann.hpp>
 
 #include "rstruct/geometry/vec3.hpp"
+#include "spatial_order.hpp"
 
 namespace rstruct::poles::detail {
 
 class PointKdTree {
  public:
-  /// Builds the tree over `points` (kept by reference: the span must outlive the tree).
+  /// Builds the tree over a copy of `points`.
   explicit PointKdTree(std::span<const Point3> points)
-      : adaptor_{points}, tree_(3, adaptor_, nanoflann::KDTreeSingleIndexAdaptorParams(12)) {}
+      : order_(morton_order(points)),
+        sorted_(reordered(points, order_)),
+        adaptor_{sorted_},
+        tree_(3, adaptor_, nanoflann::KDTreeSingleIndexAdaptorParams(12)) {}
   PointKdTree(const PointKdTree&) = delete;  // the tree refers to adaptor_
   PointKdTree& operator=(const PointKdTree&) = delete;
 
-  std::size_t size() const { return adaptor_.points.size(); }
+  std::size_t size() const { return sorted_.size(); }
 
   /// Index of a point nearest to q in floating-point distance (ties: any). \pre size() > 0.
   std::uint32_t nearest(const Point3& q, double* squared_distance_out = nullptr) const {
@@ -31,7 +37,7 @@ class PointKdTree {
     const double query[3] = {q.x, q.y, q.z};
     tree_.knnSearch(query, 1, &index, &d2);
     if (squared_distance_out != nullptr) *squared_distance_out = d2;
-    return index;
+    return order_[index];
   }
 
   /// Like nearest(), but starts from a known candidate: the point `index` at computed
@@ -40,17 +46,17 @@ class PointKdTree {
   /// that, which makes it much faster when the candidate is close. Returns a point whose
   /// squared distance is the minimum (ties: the candidate is kept).
   std::uint32_t nearest_from(const Point3& q, std::uint32_t index, double squared_distance) const {
-    Nearest result{squared_distance, index};
+    Nearest result{squared_distance, kInitial};
     const double query[3] = {q.x, q.y, q.z};
     tree_.findNeighbors(result, query, nanoflann::SearchParams());
-    return result.index;
+    return result.index == kInitial ? index : order_[result.index];
   }
 
   /// Appends to `out` the indices of every point p with |p − q| ≤ r, and possibly a few
   /// more within a relative margin (the search radius is inflated so that floating-point
   /// rounding inside the tree can never lose a point at distance ≤ r).
   void candidates_within(const Point3& q, double r, std::vector<std::uint32_t>& out) const {
-    Collector collector{inflated_squared_radius(r), out};
+    Collector collector{inflated_squared_radius(r), out, order_};
     const double query[3] = {q.x, q.y, q.z};
     tree_.findNeighbors(collector, query, nanoflann::SearchParams(32, 0.0F, false));
   }
@@ -74,13 +80,21 @@ class PointKdTree {
   struct Collector {
     double radius_squared;
     std::vector<std::uint32_t>& out;
+    const std::vector<std::uint32_t>& order;
     bool full() const { return true; }
     double worstDist() const { return radius_squared; }
     bool addPoint(double d2, std::uint32_t index) {
-      if (d2 <= radius_squared) out.push_back(index);
+      if (d2 <= radius_squared) out.push_back(order[index]);
       return true;
     }
   };
+  static constexpr std::uint32_t kInitial = 0xffffffffU;
+  static std::vector<Point3> reordered(std::span<const Point3> points,
+                                       const std::vector<std::uint32_t>& order) {
+    std::vector<Point3> sorted(points.size());
+    for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = points[order[k]];
+    return sorted;
+  }
   struct Nearest {
     double d2;
     std::uint32_t index;
@@ -96,6 +110,8 @@ class PointKdTree {
   };
   using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Adaptor>,
                                                    Adaptor, 3, std::uint32_t>;
+  std::vector<std::uint32_t> order_;  // tree position → caller's index
+  std::vector<Point3> sorted_;
   Adaptor adaptor_;
   Tree tree_;
 };

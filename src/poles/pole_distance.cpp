@@ -6,6 +6,7 @@
 
 #include "parallel_blocks.hpp"
 #include "point_kd_tree.hpp"
+#include "spatial_order.hpp"
 #include "rstruct/core/error.hpp"
 
 namespace rstruct::poles {
@@ -39,11 +40,14 @@ PoleDistance run_queries(std::span<const Point3> points, std::span<const Point3>
   const std::size_t useful = std::max<std::size_t>(1, points.size() / 8192);
   const auto t = static_cast<unsigned>(
       std::min<std::size_t>(threads != 0 ? threads : hardware, useful));
+  // Queries in Morton order: consecutive searches walk the same part of the tree.
+  const std::vector<std::uint32_t> order = detail::morton_order(points);
   const std::size_t chunk = (points.size() + t - 1) / t;
   detail::run_blocks(t, [&](unsigned k) {
     const std::size_t begin = std::min(points.size(), k * chunk);
     const std::size_t end = std::min(points.size(), begin + chunk);
-    for (std::size_t i = begin; i < end; ++i) {
+    for (std::size_t position = begin; position < end; ++position) {
+      const std::uint32_t i = order[position];
       result.nearest[i] = nearest(i);
       result.distance[i] = distance(points[i], poles[result.nearest[i]]);
     }

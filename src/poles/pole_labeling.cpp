@@ -98,8 +98,11 @@ class Labeler {
   void give(std::uint32_t q, PoleLabel side, double weight) {
     double& evidence = side == PoleLabel::inner ? inner_[q] : outer_[q];
     if (weight <= evidence) return;
+    const double before = std::fmax(inner_[q], outer_[q]);
     evidence = weight;
-    if (done_[q] == 0) heap_.emplace(std::fmax(inner_[q], outer_[q]), q);
+    // Only a larger priority needs a new heap entry; ties and contradictions are judged
+    // from inner_/outer_ when the pole is popped, whichever entry pops it.
+    if (done_[q] == 0 && weight > before) heap_.emplace(weight, q);
   }
 
   void propagate(std::uint32_t p, LabelingStats& stats) {

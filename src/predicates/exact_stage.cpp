@@ -62,6 +62,104 @@ void require_finite_points(const char* where, const PointRefs<N>& pts) {
   for (const WeightedPoint* p : pts) require_finite(where, {p->c.x, p->c.y, p->c.z, p->w});
 }
 
+__extension__ typedef __int128 Int128;
+
+/// x / 2^s as an int64. \pre it has at most 62 bits.
+std::int64_t scaled_int64(double x, int s) {
+  const DyadicParts p = split_double(x);
+  return p.mantissa != 0 ? p.mantissa * (std::int64_t{1} << (p.exponent - s)) : 0;
+}
+
+/// x / 2^s as an Int128. \pre it has at most 125 bits.
+Int128 scaled_int128(double x, int s) {
+  const DyadicParts p = split_double(x);
+  return p.mantissa != 0 ? static_cast<Int128>(p.mantissa) * (static_cast<Int128>(1) << (p.exponent - s)) : 0;
+}
+
+Int128 mul64(std::int64_t a, std::int64_t b) { return static_cast<Int128>(a) * b; }
+
+/// Σ coef_k · m_k exactly, for |coef_k| < 2^62 and |m_k| < 2^126, as high·2^64 + low with
+/// 0 ≤ low < 2^64 (|high| < 2^126).
+struct Int192 {
+  Int128 high = 0;
+  std::uint64_t low = 0;
+};
+Int192 sum_of_products(const std::int64_t (&coef)[3], const Int128 (&m)[3]) {
+  Int128 high = 0;
+  Int128 low = 0;  // sum of three values in [0, 2^64)
+  for (int k = 0; k < 3; ++k) {
+    const auto lo = static_cast<std::uint64_t>(m[k]);  // m = hi·2^64 + lo, 0 ≤ lo < 2^64
+    const auto hi = static_cast<std::int64_t>((m[k] - static_cast<Int128>(lo)) >> 64);
+    const Int128 b = static_cast<Int128>(coef[k]) * static_cast<Int128>(lo);  // |b| < 2^126
+    high += mul64(coef[k], hi) + (b >> 64);  // >> is floor division by 2^64
+    low += static_cast<Int128>(static_cast<std::uint64_t>(b));
+  }
+  high += low >> 64;
+  return {high, static_cast<std::uint64_t>(low)};
+}
+
+int sign_of(const Int192& v) {
+  if (v.high != 0) return v.high > 0 ? 1 : -1;
+  return v.low != 0 ? 1 : 0;
+}
+
+/// det[p; q; r] from the rows' z and the 2×2 minors of their (x, y), as in
+/// polynomials.hpp: pz·m(q, r) − qz·m(p, r) + rz·m(p, q).
+Int192 det3_int(std::int64_t pz, std::int64_t qz, std::int64_t rz, Int128 m_qr, Int128 m_pr,
+                Int128 m_pq) {
+  return sum_of_products({pz, -qz, rz}, {m_qr, m_pr, m_pq});
+}
+
+FastInt to_fast(Int128 v) {
+  const bool negative = v < 0;
+  const auto mag = static_cast<numeric::UInt128>(negative ? -v : v);
+  return FastInt::shifted(static_cast<std::uint64_t>(mag >> 64), 64, negative) +
+         FastInt::shifted(static_cast<std::uint64_t>(mag), 0, negative);
+}
+FastInt to_fast(const Int192& v) {
+  return to_fast(v.high) * FastInt::shifted(1, 64, false) + FastInt::shifted(v.low, 0, false);
+}
+
+/// orient3d when the scaled differences fit in 62 bits (nearby inputs, the usual case):
+/// 2×2 minors are below 2^125 in Int128, the final sum is an Int192.
+int orient3d_int64(const PointRefs<4>& pts, int s) {
+  std::int64_t t[3][3];
+  for (std::size_t j = 0; j < 3; ++j) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      t[j][i] = scaled_int64(pts[j + 1]->c[i], s) - scaled_int64(pts[0]->c[i], s);
+    }
+  }
+  const Int128 m_qr = mul64(t[1][0], t[2][1]) - mul64(t[2][0], t[1][1]);
+  const Int128 m_pr = mul64(t[0][0], t[2][1]) - mul64(t[2][0], t[0][1]);
+  const Int128 m_pq = mul64(t[0][0], t[1][1]) - mul64(t[1][0], t[0][1]);
+  return sign_of(det3_int(t[0][2], t[1][2], t[2][2], m_qr, m_pr, m_pq));
+}
+
+/// The lifted 4×4 determinant when coordinate differences fit in 62 bits and scaled
+/// weights in 124 bits: minors and lifting heights (< 2^127) in Int128, the 3×3 minors
+/// in Int192, the last four products and sums in FastInt (< 2^318).
+int lifted4_int64(const PointRefs<5>& pts, int s) {
+  std::int64_t t[4][3];
+  Int128 lift[4];
+  for (std::size_t j = 0; j < 4; ++j) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      t[j][i] = scaled_int64(pts[j]->c[i], s) - scaled_int64(pts[4]->c[i], s);
+    }
+    const Int128 tw = scaled_int128(pts[j]->w, 2 * s) - scaled_int128(pts[4]->w, 2 * s);
+    lift[j] = (mul64(t[j][0], t[j][0]) + mul64(t[j][1], t[j][1])) + mul64(t[j][2], t[j][2]) - tw;
+  }
+  auto m = [&](int p, int q) { return mul64(t[p][0], t[q][1]) - mul64(t[q][0], t[p][1]); };
+  const Int128 m_ab = m(0, 1), m_ac = m(0, 2), m_ad = m(0, 3), m_bc = m(1, 2), m_bd = m(1, 3),
+               m_cd = m(2, 3);
+  const FastInt det_bcd = to_fast(det3_int(t[1][2], t[2][2], t[3][2], m_cd, m_bd, m_bc));
+  const FastInt det_acd = to_fast(det3_int(t[0][2], t[2][2], t[3][2], m_cd, m_ad, m_ac));
+  const FastInt det_abd = to_fast(det3_int(t[0][2], t[1][2], t[3][2], m_bd, m_ad, m_ab));
+  const FastInt det_abc = to_fast(det3_int(t[0][2], t[1][2], t[2][2], m_bc, m_ac, m_ab));
+  const FastInt value = (to_fast(lift[0]) * det_bcd - to_fast(lift[1]) * det_acd) +
+                        (to_fast(lift[2]) * det_abd - to_fast(lift[3]) * det_abc);
+  return value.sign();
+}
+
 template <class Z>
 int orient3d_eval(const PointRefs<4>& pts, int s) {
   const auto v = convert<Z, 4>(pts, false, s);
@@ -170,6 +268,7 @@ int orient3d_exact(const Point3& a, const Point3& b, const Point3& c, const Poin
   const PointRefs<4> pts{&wa, &wb, &wc, &wd};
   require_finite_points("orient3d", pts);
   const ScaleFinder f = find_scale(pts, false);
+  if (f.coordinate_difference_bits() <= 62) return orient3d_int64(pts, f.unit());
   return dispatch(3 * f.coordinate_difference_bits() + 3, [&](auto tag) {
     return orient3d_eval<decltype(tag)>(pts, f.unit());
   });
@@ -190,6 +289,9 @@ int lifted4_exact(const WeightedPoint& a, const WeightedPoint& b, const Weighted
   const PointRefs<5> pts{&a, &b, &c, &d, &e};
   require_finite_points("power_test", pts);
   const ScaleFinder f = find_scale(pts, true);
+  if (f.coordinate_difference_bits() <= 62 && f.weight_difference_bits() <= 125) {
+    return lifted4_int64(pts, f.unit());
+  }
   return dispatch(3 * f.coordinate_difference_bits() + f.lifted_height_bits() + 5,
                   [&](auto tag) { return lifted4_eval<decltype(tag)>(pts, f.unit()); });
 }

@@ -102,8 +102,7 @@ template <int N>
 void set_scaled(numeric::BoundedInt<N>& out, double x, int unit) {
   const DyadicParts p = split_double(x);
   const auto m = static_cast<std::uint64_t>(p.mantissa < 0 ? -p.mantissa : p.mantissa);
-  out = numeric::BoundedInt<N>::shifted(m, p.mantissa != 0 ? p.exponent - unit : 0,
-                                        p.mantissa < 0);
+  out.assign_shifted(m, p.mantissa != 0 ? p.exponent - unit : 0, p.mantissa < 0);
 }
 
 /// Sign of an exact integer as an int.

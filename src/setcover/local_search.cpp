@@ -144,6 +144,24 @@ class RowWeighting {
     }
   }
 
+  /// Recomputes coverage counts and scores from scratch and compares (expensive check).
+  bool is_valid() const {
+    for (std::int32_t i = 0; i < inst_.num_rows(); ++i) {
+      std::int32_t c = 0;
+      for (std::int32_t l : inst_.row(i)) c += in_sol_[l];
+      if (c != cover_[i] || (c == 0) != (uncovered_pos_[i] >= 0)) return false;
+    }
+    for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
+      std::int64_t sc = 0;
+      for (std::int32_t i : inst_.column(j)) {
+        if (in_sol_[j] && cover_[i] == 1) sc -= weight_[i];
+        if (!in_sol_[j] && cover_[i] == 0) sc += weight_[i];
+      }
+      if (sc != score_[j]) return false;
+    }
+    return true;
+  }
+
   double exact_cost() const {
     double c = 0.0;
     for (std::int32_t j : sol_) c += inst_.cost(j);
@@ -208,6 +226,7 @@ LocalSearchResult row_weighting_search(const Instance& inst, const std::vector<s
   const double slack = inst.has_integer_costs() ? 0.5 : 1e-9 * std::max(1.0, std::abs(start_cost));
   std::int32_t tabu = -1;
   std::int64_t it = 0;
+  const bool remove_first = inst.is_unicost();
   while (true) {
     if (s.uncovered_.empty()) {
       const double c = s.exact_cost();
@@ -221,6 +240,13 @@ LocalSearchResult row_weighting_search(const Instance& inst, const std::vector<s
       continue;
     }
     if (++it > options.max_iterations || ((it & 63) == 0 && clock.seconds() > options.deadline)) break;
+    // Unicost: RWLS's order, drop one column and then repair. Weighted: add first and then
+    // drop the worst columns until cheaper than the best (a swap move, better there).
+    if (remove_first && s.sol_.size() > 1) {
+      const std::int32_t j = s.pick_removal(tabu);
+      s.remove(j);
+      s.stamp_[j] = it;
+    }
     const std::int32_t k = s.pick_addition();
     s.add(k);
     s.stamp_[k] = it;
@@ -231,6 +257,7 @@ LocalSearchResult row_weighting_search(const Instance& inst, const std::vector<s
       s.stamp_[j] = it;
     }
     s.bump_weights();
+    if constexpr (check_level() >= 3) RSTRUCT_ASSERT_MSG(s.is_valid(), "local search state out of sync");
   }
   result.iterations = it;
   return result;

@@ -118,6 +118,12 @@ Instance read_scp_columns(std::istream& in, const std::string& name) {
     start.push_back(static_cast<std::int64_t>(rows.size()));
   }
   reader.expect_end();
+  // The header alone fixes the row count here; refuse to allocate rows that cannot all be
+  // covered (fewer entries than rows) rather than build a huge instance with no cover.
+  if (static_cast<std::int64_t>(rows.size()) < m) {
+    reader.fail(std::to_string(m) + " rows but only " + std::to_string(rows.size()) +
+                " entries: some row is covered by no column");
+  }
   return Instance::from_csr(m, start, rows, std::move(costs));
 }
 

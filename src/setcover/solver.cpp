@@ -132,22 +132,27 @@ ComponentResult solve_component(const Instance& inst, const Budget& budget, cons
   st.bound = detail::lagrangian_bound(inst, st.u);
   // Coordinate ascent first: a few O(entries) sweeps give a good bound on large sparse
   // instances, where each subgradient iteration is as expensive as a sweep.
-  detail::coordinate_ascent(inst, st, 5, t0 + 0.2 * std::max(0.0, budget.deadline - t0), clock);
+  if (clock.seconds() < budget.deadline) {
+    detail::coordinate_ascent(inst, st, 5, t0 + 0.2 * std::max(0.0, budget.deadline - t0), clock);
+  }
   const double now = clock.seconds();
   out.greedy_seconds = now - t0;
   detail::SubgradientOptions so;
   so.max_iterations = budget.subgradient_iterations;
   so.deadline = now + 0.3 * std::max(0.0, budget.deadline - now);
   const double before = st.cover_cost;
-  detail::subgradient(inst, st, so, clock);
-  detail::coordinate_ascent(inst, st, 20, so.deadline, clock);
+  // Past the deadline only the mandatory work (a cover, multipliers) is done.
+  if (clock.seconds() < so.deadline) {
+    detail::subgradient(inst, st, so, clock);
+    detail::coordinate_ascent(inst, st, 20, so.deadline, clock);
+  }
   if (st.cover_cost < before) out.seconds_to_best = clock.seconds();
   out.subgradient_iterations = st.iterations;
   const double t1 = clock.seconds();
   out.subgradient_seconds = t1 - now;
   if (detail::bound_closes_gap(inst, st.bound, st.cover_cost)) {
     out.proven = true;
-  } else {
+  } else if (inst.num_cols() <= kExactColumns || clock.seconds() < budget.deadline) {
     improve_by_local_search(inst, st, budget, clock, out);
   }
   out.local_search_seconds = clock.seconds() - t1;
@@ -155,6 +160,29 @@ ComponentResult solve_component(const Instance& inst, const Budget& budget, cons
   out.cost = st.cover_cost;
   out.u = st.u;
   return out;
+}
+
+/// Fills the certificate (rounded multipliers, exact claims) and the certified figures.
+void attach_certificate(const Instance& inst, const std::vector<double>& u, Solution& sol) {
+  Certificate& cert = sol.certificate;
+  cert.num_rows = inst.num_rows();
+  cert.num_cols = inst.num_cols();
+  cert.unicost = inst.is_unicost();
+  cert.cover = sol.columns;
+  cert.multipliers = to_fixed_point(u, cert.scale);
+  sol.lower_bound = certified_lower_bound(inst, cert);
+  double claim = sol.lower_bound;
+  if (!cert.unicost && !inst.has_integer_costs()) {
+    // Costs read from decimal text are within 2^-53 relative of their doubles, which moves L
+    // by at most 2^-53 Σ c_j: claim that much less so the verifier's exact reading agrees.
+    double total = 0.0;
+    for (double c : inst.costs()) total += c;
+    claim = std::nextafter(claim - std::ldexp(total, -50), -INFINITY);
+  }
+  cert.bound_claim = exact_rational_text(claim);
+  cert.cost_claim = exact_cost_text(inst, sol.columns, cert.unicost);
+  sol.gap = sol.cost > 0 ? (sol.cost - sol.lower_bound) / sol.cost : 0.0;
+  sol.optimal = sol.lower_bound >= sol.cost;
 }
 
 }  // namespace
@@ -213,25 +241,7 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
   sol.cost = inst.cost_of(cover);
   sol.stats.greedy_cost = greedy_cost;
   const double t_cert = clock.seconds();
-  Certificate& cert = sol.certificate;
-  cert.num_rows = inst.num_rows();
-  cert.num_cols = inst.num_cols();
-  cert.unicost = inst.is_unicost();
-  cert.cover = cover;
-  cert.multipliers = to_fixed_point(u, cert.scale);
-  sol.lower_bound = certified_lower_bound(inst, cert);
-  double claim = sol.lower_bound;
-  if (!cert.unicost && !inst.has_integer_costs()) {
-    // Costs read from decimal text are within 2^-53 relative of their doubles, which moves L
-    // by at most 2^-53 Σ c_j: claim that much less so the verifier's exact reading agrees.
-    double total = 0.0;
-    for (double c : inst.costs()) total += c;
-    claim = std::nextafter(claim - std::ldexp(total, -50), -INFINITY);
-  }
-  cert.bound_claim = exact_rational_text(claim);
-  cert.cost_claim = exact_cost_text(inst, cover, cert.unicost);
-  sol.gap = sol.cost > 0 ? (sol.cost - sol.lower_bound) / sol.cost : 0.0;
-  sol.optimal = sol.lower_bound >= sol.cost;
+  attach_certificate(inst, u, sol);
   sol.proven_optimal = sol.optimal || all_proven;
   sol.stats.certificate_seconds = clock.seconds() - t_cert;
   sol.stats.seconds = clock.seconds();

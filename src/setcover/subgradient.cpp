@@ -40,6 +40,49 @@ std::vector<std::int32_t> build_core(const Instance& inst, const std::vector<dou
   return core;
 }
 
+/// L on the core columns at u, and the subgradient s_i = 1 − #{core j ∋ i : r_j < 0}.
+double core_value_and_subgradient(const Instance& inst, const std::vector<std::int32_t>& core,
+                                  const std::vector<double>& u, std::vector<double>& s) {
+  double value = 0.0;
+  for (double x : u) value += x;
+  std::fill(s.begin(), s.end(), 1.0);
+  for (std::int32_t j : core) {
+    double r = inst.cost(j);
+    for (std::int32_t i : inst.column(j)) r -= u[i];
+    if (r < 0) {
+      value += r;
+      for (std::int32_t i : inst.column(j)) s[i] -= 1.0;
+    }
+  }
+  return value;
+}
+
+/// CFT's step-size rule over windows of kStepWindow iterations: halve λ when L oscillates by
+/// more than 1 %, grow it by 1.5 when L moves by less than 0.1 %. Added: a window that does
+/// not beat the previous window's maximum is stalling (often a two-cycle), so λ halves; a
+/// window whose last value is its maximum is steady progress, so λ may grow.
+class StepControl {
+ public:
+  double update(double value, double lambda) {
+    window_max_ = std::max(window_max_, value);
+    window_min_ = std::min(window_min_, value);
+    if (++count_ % kStepWindow != 0) return lambda;
+    const double spread = (window_max_ - window_min_) / std::max(1e-12, std::abs(window_max_));
+    if (spread > 0.01 || window_max_ <= previous_max_) lambda /= 2.0;
+    else if (spread < 0.001 || value >= window_max_) lambda *= 1.5;
+    previous_max_ = window_max_;
+    window_max_ = -std::numeric_limits<double>::infinity();
+    window_min_ = std::numeric_limits<double>::infinity();
+    return lambda;
+  }
+
+ private:
+  std::int32_t count_ = 0;
+  double window_max_ = -std::numeric_limits<double>::infinity();
+  double window_min_ = std::numeric_limits<double>::infinity();
+  double previous_max_ = -std::numeric_limits<double>::infinity();
+};
+
 }  // namespace
 
 double lagrangian_bound(const Instance& inst, std::span<const double> u,
@@ -138,9 +181,7 @@ void subgradient(const Instance& inst, LagrangianState& state, const Subgradient
   }
   price();
   double lambda = 0.1;
-  double window_max = -std::numeric_limits<double>::infinity();
-  double window_min = std::numeric_limits<double>::infinity();
-  double previous_window_max = -std::numeric_limits<double>::infinity();
+  StepControl control;
   std::vector<double> s(m);
   const std::int32_t heuristic_every = std::max(10, options.max_iterations / 25);
   double last_best = state.bound;
@@ -149,17 +190,7 @@ void subgradient(const Instance& inst, LagrangianState& state, const Subgradient
     ++state.iterations;
     if (bound_closes_gap(inst, state.bound, state.cover_cost)) break;
     if ((it & 7) == 0 && clock.seconds() > options.deadline) break;
-    double value = 0.0;
-    for (double x : u) value += x;
-    std::fill(s.begin(), s.end(), 1.0);
-    for (std::int32_t j : core) {
-      double r = inst.cost(j);
-      for (std::int32_t i : inst.column(j)) r -= u[i];
-      if (r < 0) {
-        value += r;
-        for (std::int32_t i : inst.column(j)) s[i] -= 1.0;
-      }
-    }
+    const double value = core_value_and_subgradient(inst, core, u, s);
     if (!use_core && value > state.bound) {
       state.bound = value;
       state.u = u;
@@ -170,20 +201,7 @@ void subgradient(const Instance& inst, LagrangianState& state, const Subgradient
       norm += s[i] * s[i];
     }
     if (norm == 0.0) break;  // the Lagrangian solution is an optimal cover of the core
-    window_max = std::max(window_max, value);
-    window_min = std::min(window_min, value);
-    if (it % kStepWindow == 0) {
-      const double spread = (window_max - window_min) / std::max(1e-12, std::abs(window_max));
-      // CFT's rule, plus: a window whose last value is its maximum is steady progress, not
-      // oscillation, so the step may grow.
-      // A window that does not beat the previous one's maximum is stalling (often a
-      // two-cycle), so the step shrinks.
-      if (spread > 0.01 || window_max <= previous_window_max) lambda /= 2.0;
-      else if (spread < 0.001 || value >= window_max) lambda *= 1.5;
-      previous_window_max = window_max;
-      window_max = -std::numeric_limits<double>::infinity();
-      window_min = std::numeric_limits<double>::infinity();
-    }
+    lambda = control.update(value, lambda);
     const double target_gap = std::max(state.cover_cost - value, 1e-3 * std::max(1.0, state.cover_cost));
     const double step = lambda * target_gap / norm;
     for (std::size_t i = 0; i < m; ++i) u[i] = std::max(0.0, u[i] + step * s[i]);

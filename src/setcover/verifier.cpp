@@ -188,6 +188,23 @@ mpz_class ceil_of(const mpq_class& q) {
   return r;
 }
 
+/// L(u) = Σ U_i / S + Σ_j min(0, c_j − Σ_{i∈S_j} U_i / S), computed as (L·S) / S.
+mpq_class lagrangian_bound(const ExactInstance& inst, const std::vector<mpq_class>& costs,
+                           const ParsedCertificate& c) {
+  mpq_class scaled(0);
+  for (const mpz_class& x : c.u) scaled += x;
+  mpz_class col_sum;
+  for (std::size_t j = 0; j < costs.size(); ++j) {
+    col_sum = 0;
+    for (long long i : inst.columns[j]) col_sum += c.u[static_cast<std::size_t>(i)];
+    mpq_class r = costs[j] * c.scale - col_sum;
+    if (r < 0) scaled += r;
+  }
+  mpq_class bound = scaled / c.scale;
+  bound.canonicalize();
+  return bound;
+}
+
 Verdict check(ExactInstance inst, std::istream& certificate) {
   // A column is a set: a row listed twice counts once.
   for (auto& col : inst.columns) {
@@ -225,18 +242,7 @@ Verdict check(ExactInstance inst, std::istream& certificate) {
       if (v.uncovered_rows++ == 0) v.problems.push_back("row " + std::to_string(i + 1) + " is not covered");
     }
   }
-  // Lagrangian bound, scaled by `scale`: L·S = Σ U_i + Σ_j min(0, c_j·S − Σ_{i∈S_j} U_i).
-  mpq_class scaled(0);
-  for (const mpz_class& x : c.u) scaled += x;
-  mpz_class col_sum;
-  for (std::size_t j = 0; j < costs.size(); ++j) {
-    col_sum = 0;
-    for (long long i : inst.columns[j]) col_sum += c.u[static_cast<std::size_t>(i)];
-    mpq_class r = costs[j] * c.scale - col_sum;
-    if (r < 0) scaled += r;
-  }
-  mpq_class bound = scaled / c.scale;
-  bound.canonicalize();
+  mpq_class bound = lagrangian_bound(inst, costs, c);
   if (v.integer_costs) bound = mpq_class(ceil_of(bound));
   // Non-integer costs: the claim may come from binary doubles of the decimal costs; it must
   // agree within the stated margin 2^-40 · cost (integer costs: exactly).

@@ -48,6 +48,7 @@ TEST_CASE("malformed files give InvalidInput naming the line") {
   CHECK_THROWS_AS(rows_from("1 1\nnan\n1 1\n"), InvalidInput);
   CHECK_THROWS_AS(columns_from("2 1\n1 3 1 2 2\n"), InvalidInput);    // count > rows
   CHECK_THROWS_AS(columns_from("2 1\n1 1 0\n"), InvalidInput);        // row 0 (1-based)
+  CHECK_THROWS_AS(columns_from("100000000 1\n1 1 1\n"), InvalidInput);  // rows without entries
 }
 
 TEST_CASE("OR-Library scp41 reads with its published size") {

@@ -37,17 +37,23 @@ class BoundedInt {
   /// \throws InternalError if the result does not fit in N limbs.
   static BoundedInt shifted(std::uint64_t m, int shift, bool negative) {
     BoundedInt r;
-    if (m == 0) return r;
+    r.assign_shifted(m, shift, negative);
+    return r;
+  }
+
+  /// *this = (−1)^negative · m · 2^shift, in place. \throws InternalError if too large.
+  void assign_shifted(std::uint64_t m, int shift, bool negative) {
+    size_ = 0;
+    negative_ = negative;
+    if (m == 0) return;
     const int word = shift / 64, bit = shift % 64;
     const std::uint64_t high = bit != 0 ? m >> (64 - bit) : 0;
     const int size = word + (high != 0 ? 2 : 1);
     if (size > N) overflow();
-    for (int i = 0; i < word; ++i) r.limb_[i] = 0;
-    r.limb_[word] = m << bit;
-    if (high != 0) r.limb_[word + 1] = high;
-    r.size_ = size;
-    r.negative_ = negative;
-    return r;
+    for (int i = 0; i < word; ++i) limb_[i] = 0;
+    limb_[word] = m << bit;
+    if (high != 0) limb_[word + 1] = high;
+    size_ = size;
   }
 
   /// Copies only the limbs in use.

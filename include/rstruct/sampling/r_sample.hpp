@@ -30,8 +30,12 @@
 /// d/l > r_fill becomes a new sample point (thinned so that new points are ≥ r_fill·l/2
 /// apart), until a round certifies everything. Termination: each added point is at
 /// distance > r_fill·lfs from the previous points, so by packing only finitely many can be
-/// added; cells with d/l ≤ r_fill are accepted once ρ/l ≤ (r − r_fill)/(1 + r). Finally
-/// the bound is tightened by certifying at thresholds just above grid_max.
+/// added; cells with d/l ≤ r_fill are accepted once ρ/l ≤ (r − r_fill)/(1 + r). Cells
+/// accepted in one round stay accepted (adding points only lowers dist(·, S)), so later
+/// rounds revisit only the previous round's violating cells. The final sample is then
+/// certified afresh by certify_r_sample at threshold r (its own full pass), and the bound
+/// is tightened by certifying at 1.05 × the largest ratio seen so far (up to 4 attempts,
+/// each failed attempt raising that ratio); the tightest success is reported.
 
 #include <cstddef>
 #include <cstdint>
