@@ -19,9 +19,10 @@ int main() {
   proof.less("(a) leading term 3r (rad) < 14.99deg", 3 * r, a);
   proof.note("(a) room left for the O(r^2) term, in units of r^2", (a - 3 * r) / (r * r));
   Interval ab = asin_u(r / (1 - r));
-  proof.less("(a) candidate closed form 3 asin(r/(1-r)) < 14.99deg "
-             "(= angle(n_s, sp) <= 2 asin(r/(1-r)) [AB99] + one more asin(r/(1-r)))",
-             3 * ab, a);
+  proof.less(
+      "(a) candidate closed form 3 asin(r/(1-r)) < 14.99deg "
+      "(= angle(n_s, sp) <= 2 asin(r/(1-r)) [AB99] + one more asin(r/(1-r)))",
+      3 * ab, a);
   proof.note("(a) 3 asin(r/(1-r)) in degrees", to_deg(3 * ab));
 
   const Interval b = ratio(114, 10000);
