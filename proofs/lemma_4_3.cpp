@@ -6,7 +6,8 @@
 // The paper omits the proof ("for lack of space"), so neither constant can be checked
 // against a derivation. This program checks what can be checked: that the stated numbers are
 // consistent with the stated leading terms, and which closed forms reproduce them. The
-// verdict in README.md is therefore UNPROVEN, not HOLDS.
+// verdict in README.md is therefore UNPROVEN, not HOLDS. What we can certify instead (a much
+// weaker angle) is lemma_4_3_elementary.cpp.
 #include "interval.hpp"
 
 using namespace rstruct::proofs;
