@@ -34,8 +34,9 @@ inline BnbResult a1b_max_distance(const Interval& a, const Interval& theta, long
     const Interval& w = b[3];
     // v outside B_p <=> rho^2 - 2 R rho cos(alpha - phi) >= 0 <=> rho w >= 2 cos(alpha - phi)
     Interval slack = rho * w - 2 * cos(alpha - phi);
-    Feasible fe = lo(slack) >= 0 ? Feasible::kAll : hi(slack) < 0 ? Feasible::kNone
-                                                                  : Feasible::kSome;
+    Feasible fe = lo(slack) >= 0  ? Feasible::kAll
+                  : hi(slack) < 0 ? Feasible::kNone
+                                  : Feasible::kSome;
     return Eval{sqrt_nonneg(rho * rho + 2 * rho * cos(alpha) + 1) - 1, fe};
   };
   Box box{Interval(Real(0), hi(a)), Interval(Real(0), hi(pi())), Interval(-hi(theta), hi(theta)),
@@ -75,8 +76,7 @@ inline Interval a2_exterior_angle(const Interval& c) { return 2 * acos_u(c) - pi
 /// min over d in [0, d_max], R_c >= 1, rho >= (1 - d) * factor of the exterior angle (B&B;
 /// rho = (1 - d) factor / u with u in (0, 1]). Seeded with the point d = d_max, R_c = 1,
 /// rho = (1 - d_max) factor. Returns the enclosure of the maximal cosine C.
-inline BnbResult a2_max_cos(const Interval& d_max, const Interval& factor,
-                            const Interval& beta0) {
+inline BnbResult a2_max_cos(const Interval& d_max, const Interval& factor, const Interval& beta0) {
   Objective f = [&](const Box& b) {
     // a2_cos_bound with 1/rho = u / ((1 - d) factor), written so each variable occurs few
     // times (less interval over-estimation).
@@ -140,8 +140,7 @@ struct Chain56 {
 
 /// A zero of f in [a, b] where f(a), f(b) have opposite signs, by bisection on midpoints (a
 /// locator only: the interval it suggests is then certified by B&B).
-inline double bisect_root(const std::function<Interval(const Interval&)>& f, double a,
-                          double b) {
+inline double bisect_root(const std::function<Interval(const Interval&)>& f, double a, double b) {
   bool neg_a = mid_d(f(Interval(a))) < 0;
   for (int i = 0; i < 60; ++i) {
     double m = 0.5 * (a + b);
@@ -205,8 +204,9 @@ inline EdgeCheck a3_edge(const Interval& psi, const Interval& kappa) {
     Interval diff = 1 - (b0 - a0);
     bool all = lo(adm) >= 0 && lo(order) >= 0 && lo(sum) >= 0 && lo(diff) >= 0;
     bool none = hi(adm) < 0 || hi(order) < 0 || hi(sum) < 0 || hi(diff) < 0;
-    return Eval{ctau - a0 + b0 * cpsi,
-                all ? Feasible::kAll : none ? Feasible::kNone : Feasible::kSome};
+    return Eval{ctau - a0 + b0 * cpsi, all    ? Feasible::kAll
+                                       : none ? Feasible::kNone
+                                              : Feasible::kSome};
   };
   Box region{Interval(Real(0), hi(t_apex)), Interval(Real(0), hi(t_apex) + 1)};
   out.g = minimize(g, region, 1e-9, 200000);

@@ -131,8 +131,7 @@ using Objective = std::function<Eval(const Box&)>;
 /// `prove_above`: stop as soon as every remaining box has f > prove_above (the claim
 /// "min f > prove_above" is then proved; the enclosure's lower end is > prove_above).
 inline BnbResult minimize(const Objective& f, const Box& box, double tol, long max_boxes,
-                          std::vector<double> scale = {},
-                          const Interval* witness = nullptr,
+                          std::vector<double> scale = {}, const Interval* witness = nullptr,
                           double prove_above = std::numeric_limits<double>::infinity()) {
   if (scale.empty()) scale.assign(box.size(), 1.0);
   struct Node {
@@ -210,8 +209,7 @@ inline BnbResult minimize(const Objective& f, const Box& box, double tol, long m
 
 /// max f = -min(-f).
 inline BnbResult maximize(const Objective& f, const Box& box, double tol, long max_boxes,
-                          std::vector<double> scale = {},
-                          const Interval* witness = nullptr) {
+                          std::vector<double> scale = {}, const Interval* witness = nullptr) {
   Objective neg = [&f](const Box& b) {
     Eval e = f(b);
     e.value = -e.value;
@@ -235,7 +233,7 @@ class Proof {
   /// value < bound (strict). Margin = bound - value.
   Verdict less(const std::string& claim, const Interval& value, const Interval& bound) {
     Interval margin = bound - value;
-    Verdict v = lo(margin) > 0 ? Verdict::kHolds
+    Verdict v = lo(margin) > 0    ? Verdict::kHolds
                 : hi(margin) <= 0 ? Verdict::kFails
                                   : Verdict::kUndecided;
     return record(claim, value, margin, v);
@@ -243,7 +241,7 @@ class Proof {
   /// value <= bound.
   Verdict less_eq(const std::string& claim, const Interval& value, const Interval& bound) {
     Interval margin = bound - value;
-    Verdict v = lo(margin) >= 0 ? Verdict::kHolds
+    Verdict v = lo(margin) >= 0  ? Verdict::kHolds
                 : hi(margin) < 0 ? Verdict::kFails
                                  : Verdict::kUndecided;
     return record(claim, value, margin, v);
@@ -251,14 +249,14 @@ class Proof {
   /// value > bound (strict). Margin = value - bound.
   Verdict greater(const std::string& claim, const Interval& value, const Interval& bound) {
     Interval margin = value - bound;
-    Verdict v = lo(margin) > 0 ? Verdict::kHolds
+    Verdict v = lo(margin) > 0    ? Verdict::kHolds
                 : hi(margin) <= 0 ? Verdict::kFails
                                   : Verdict::kUndecided;
     return record(claim, value, margin, v);
   }
   Verdict greater_eq(const std::string& claim, const Interval& value, const Interval& bound) {
     Interval margin = value - bound;
-    Verdict v = lo(margin) >= 0 ? Verdict::kHolds
+    Verdict v = lo(margin) >= 0  ? Verdict::kHolds
                 : hi(margin) < 0 ? Verdict::kFails
                                  : Verdict::kUndecided;
     return record(claim, value, margin, v);

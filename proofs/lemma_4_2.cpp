@@ -43,8 +43,9 @@ int main() {
     const Interval& d = b[0];
     const Interval& l = b[1];
     Interval slack = r * r * l * (d + l) - (1 - d * d);  // >= 0 on feasible points
-    Feasible f = lo(slack) >= 0 ? Feasible::kAll : hi(slack) < 0 ? Feasible::kNone
-                                                                 : Feasible::kSome;
+    Feasible f = lo(slack) >= 0  ? Feasible::kAll
+                 : hi(slack) < 0 ? Feasible::kNone
+                                 : Feasible::kSome;
     return Eval{d, f};
   };
   BnbResult m = minimize(g, {hull(0, 1), hull(0, 2)}, 1e-9, 400000);
@@ -52,8 +53,8 @@ int main() {
              std::to_string(m.point.at(0)) + ", " + std::to_string(m.point.at(1)) + ")");
   proof.greater("min d over admissible configurations (B&B) > 0.9807", m.extremum,
                 ratio(9807, 10000));
-  proof.less_eq("B&B minimum agrees with the closed form (min d - c(0.08) <= 1e-8)",
-                m.extremum - c, ratio(1, 100000000));
+  proof.less_eq("B&B minimum agrees with the closed form (min d - c(0.08) <= 1e-8)", m.extremum - c,
+                ratio(1, 100000000));
 
   // Monotonicity used by the paper (worst case l = 2R_p): d(l) decreasing on (0, 2].
   Objective slope = [&](const Box& b) {
@@ -63,8 +64,7 @@ int main() {
     return Eval{-b[0] * q / sqrt_nonneg(1 - b[0] * b[0] * q) - r2 / 2, Feasible::kAll};
   };
   BnbResult s = maximize(slope, {hull(0, 2)}, 1e-6, 20000);
-  proof.less("max over l in [0,2] of d'(l) < 0 (worst case is l = 2 R_p)", s.extremum,
-             Interval(0));
+  proof.less("max over l in [0,2] of d'(l) < 0 (worst case is l = 2 R_p)", s.extremum, Interval(0));
   proof.less_eq("|d(l = 2) - c(0.08)| <= 1e-60 (the paper's worst case is this root)",
                 abs(root(r, Interval(2)) - c), pow(Interval(10), -60));
 

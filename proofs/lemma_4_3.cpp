@@ -6,7 +6,8 @@
 // The paper omits the proof ("for lack of space"), so neither constant can be checked
 // against a derivation. This program checks what can be checked: that the stated numbers are
 // consistent with the stated leading terms, and which closed forms reproduce them. The
-// verdict in README.md is therefore UNPROVEN, not HOLDS.
+// verdict in README.md is therefore UNPROVEN, not HOLDS. What we can certify instead (a much
+// weaker angle) is lemma_4_3_elementary.cpp.
 #include "interval.hpp"
 
 using namespace rstruct::proofs;
@@ -19,9 +20,10 @@ int main() {
   proof.less("(a) leading term 3r (rad) < 14.99deg", 3 * r, a);
   proof.note("(a) room left for the O(r^2) term, in units of r^2", (a - 3 * r) / (r * r));
   Interval ab = asin_u(r / (1 - r));
-  proof.less("(a) candidate closed form 3 asin(r/(1-r)) < 14.99deg "
-             "(= angle(n_s, sp) <= 2 asin(r/(1-r)) [AB99] + one more asin(r/(1-r)))",
-             3 * ab, a);
+  proof.less(
+      "(a) candidate closed form 3 asin(r/(1-r)) < 14.99deg "
+      "(= angle(n_s, sp) <= 2 asin(r/(1-r)) [AB99] + one more asin(r/(1-r)))",
+      3 * ab, a);
   proof.note("(a) 3 asin(r/(1-r)) in degrees", to_deg(3 * ab));
 
   const Interval b = ratio(114, 10000);

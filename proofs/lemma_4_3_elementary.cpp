@@ -40,8 +40,7 @@ Interval violation(const Interval& u, const Interval& g, const Interval& w, cons
   Interval uh = u * u + h * h;
   Interval rho_y = sqrt_nonneg(dw * dw - 2 * w * dw * t + w * w * uh);
   Interval l = 1 + sqrt_nonneg(uh);
-  return d * (2 - d * w) + 2 * dw * t - w * uh -
-         kR * l * (2 * rho_y * s + kR * rho_y + kR * l * w);
+  return d * (2 - d * w) + 2 * dw * t - w * uh - kR * l * (2 * rho_y * s + kR * rho_y + kR * l * w);
 }
 
 /// Objective over boxes (gamma, w, delta): max over the lens points u of the violation;
@@ -62,8 +61,8 @@ Objective refutation(std::function<Interval(const Interval&)> s_of) {
     // outside O) for a length 2|cos gamma|, and p is inside O, so F meets it again at z with
     // |x - z| >= 2|cos gamma|; z is deeper than x by |x - z| and needs a sample outside B_p
     // within r lfs(z) <= r (1 + |x - z|):  |x - z| <= (r - delta)/(1 - r).
-    Interval cneg = Interval(lo(cos(g)) < 0 ? lo(cos(g)) : Real(0),
-                             hi(cos(g)) < 0 ? hi(cos(g)) : Real(0));
+    Interval cneg =
+        Interval(lo(cos(g)) < 0 ? lo(cos(g)) : Real(0), hi(cos(g)) < 0 ? hi(cos(g)) : Real(0));
     Interval back = (kR - d) / (1 - kR) + 2 * cneg;
     bool none = hi(at_x) < 0 || hi(l42) < 0 || hi(back) < 0;
     bool all = lo(at_x) >= 0 && lo(l42) >= 0 && lo(back) >= 0;
@@ -87,22 +86,24 @@ int main() {
     Interval a = Interval(hi(g)) + eps;
     return hi(a) >= hi(pi() / 2) ? Interval(1) : Interval(hi(sin(a)));
   };
-  BnbResult p1 = minimize(refutation(s_boot),
-                          {Interval(lo(g1) - eps, hi(pi())), hull(0, 2), hull(0, 0.15)}, 1e-9,
-                          400000, {1.0, 2.0, 0.15}, nullptr, 0.0);
+  BnbResult p1 =
+      minimize(refutation(s_boot), {Interval(lo(g1) - eps, hi(pi())), hull(0, 2), hull(0, 0.15)},
+               1e-9, 400000, {1.0, 2.0, 0.15}, nullptr, 0.0);
   proof.note("pass 1: B&B boxes " + std::to_string(p1.boxes));
-  proof.greater("pass 1: every configuration with gamma >= 36.5deg - eps is refuted "
-                "(min over the box of the best violation > 0)  =>  gamma < 36.5deg",
-                p1.extremum, Interval(0));
+  proof.greater(
+      "pass 1: every configuration with gamma >= 36.5deg - eps is refuted "
+      "(min over the box of the best violation > 0)  =>  gamma < 36.5deg",
+      p1.extremum, Interval(0));
   const Interval s1 = sin(g1);
   const Interval g2 = deg(ratio(297, 10));
   BnbResult p2 = minimize(refutation([s1](const Interval&) { return s1; }),
-                          {Interval(lo(g2), hi(pi())), hull(0, 1), hull(0, 0.15)}, 1e-9,
-                          400000, {1.0, 1.0, 0.15}, nullptr, 0.0);
+                          {Interval(lo(g2), hi(pi())), hull(0, 1), hull(0, 0.15)}, 1e-9, 400000,
+                          {1.0, 1.0, 0.15}, nullptr, 0.0);
   proof.note("pass 2: B&B boxes " + std::to_string(p2.boxes));
-  proof.greater("pass 2 (lfs(x) <= R_p, Lemma 5.1's case): gamma >= 29.7deg refuted  =>  "
-                "gamma < 29.7deg",
-                p2.extremum, Interval(0));
+  proof.greater(
+      "pass 2 (lfs(x) <= R_p, Lemma 5.1's case): gamma >= 29.7deg refuted  =>  "
+      "gamma < 29.7deg",
+      p2.extremum, Interval(0));
   proof.note("compare: the paper's 14.99deg; Lemma 5.1 needs <= 16.107deg");
   // Lemma 4.3b by the same constraint at x: delta (2 - delta w) <= r (2 (1 - delta w) sin(g)
   // + r (1 - delta w) + r w) with sin(g) <= sin(36.5deg), w in [0, 2] (lfs(x) = 1).
@@ -111,15 +112,13 @@ int main() {
     const Interval& d = b[1];
     Interval dw = 1 - d * w;
     Interval at_x = kR * (2 * dw * s1 + kR * dw + kR * w) - d * (2 - d * w);
-    Feasible fe = hi(at_x) < 0 ? Feasible::kNone : lo(at_x) >= 0 ? Feasible::kAll
-                                                                : Feasible::kSome;
+    Feasible fe = hi(at_x) < 0 ? Feasible::kNone : lo(at_x) >= 0 ? Feasible::kAll : Feasible::kSome;
     return Eval{d, fe};
   };
   BnbResult pd = maximize(depth, {hull(0, 2), hull(0, 0.15)}, 1e-7, 200000);
-  proof.less("(b) penetration of x into B_p < 0.058 lfs(x) (B&B; the paper: 0.0114)",
-             pd.extremum, ratio(58, 1000));
-  proof.note("Lemma 5.6 (5) case (b) with it: 0.058 (1 + r) + r",
-             ratio(58, 1000) * (1 + kR) + kR);
+  proof.less("(b) penetration of x into B_p < 0.058 lfs(x) (B&B; the paper: 0.0114)", pd.extremum,
+             ratio(58, 1000));
+  proof.note("Lemma 5.6 (5) case (b) with it: 0.058 (1 + r) + r", ratio(58, 1000) * (1 + kR) + kR);
   Interval c51 = 1 + 2 * sin(g2 / 2);
   proof.note("Lemma 5.1 with gamma < 29.7deg: lfs(s) <= (1 + 2 sin(gamma/2)) D^(s)", c51);
   return proof.finish();

@@ -46,9 +46,10 @@ int main() {
   proof.less("case 2a, exact: max |p - m_x| over d in [c(r),1], gamma <= 14.99deg (B&B)",
              m.extremum, k2802);
   proof.less("case 2b: 1 - c(0.08) < 0.0193", 1 - c, ratio(193, 10000));
-  proof.less("case 2b's 0.0193 < case 2a's 0.2802, so lfs(s) <= D^(s) + 0.2802 R_p "
-             "<= 1.2802 D^(s) (R_p <= |s - p| = D^(s))",
-             ratio(193, 10000), k2802);
+  proof.less(
+      "case 2b's 0.0193 < case 2a's 0.2802, so lfs(s) <= D^(s) + 0.2802 R_p "
+      "<= 1.2802 D^(s) (R_p <= |s - p| = D^(s))",
+      ratio(193, 10000), k2802);
 
   // Slack in the imported angle: largest gamma with max distance 2 sin(gamma/2) <= 0.2802
   // (the maximum over d is at d = 1 because cos(gamma) < c(0.08) for these angles).
@@ -64,9 +65,7 @@ int main() {
   Interval cover = r / (1 - r);
   proof.note("r/(1-r) at r = 0.08", cover);
   Interval rho_low = cover * ratio(12802, 10000);
-  proof.less("radius lower bound r/(1-r) * 1.2802 < rho_min = 0.24", rho_low,
-             ratio(24, 100));
-  proof.note("r/(1-r) * 1.2802 at r = 0.08 (smallest rho covering F by this argument)",
-             rho_low);
+  proof.less("radius lower bound r/(1-r) * 1.2802 < rho_min = 0.24", rho_low, ratio(24, 100));
+  proof.note("r/(1-r) * 1.2802 at r = 0.08 (smallest rho covering F by this argument)", rho_low);
   return proof.finish();
 }

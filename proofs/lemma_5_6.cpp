@@ -44,16 +44,15 @@ int main() {
   proof.greater("(2) corner s_0: sqrt(1 - (1 - k1)^2) > 0.37", sqrt_nonneg(1 - (1 - k1) * (1 - k1)),
                 ratio(37, 100));
   BnbResult m2 = min_ratio2(k1);
-  proof.greater("(2) min |s-x|/|s-m| over the shaded region, xi >= k1 (B&B) > 0.37",
-                m2.extremum, ratio(37, 100));
+  proof.greater("(2) min |s-x|/|s-m| over the shaded region, xi >= k1 (B&B) > 0.37", m2.extremum,
+                ratio(37, 100));
   proof.less("rho / 0.817 < 0.368", rho / c55, ratio(368, 1000));
   proof.less("rho / 0.8164 < 0.368 (with Corollary 5.5 corrected, ERRATA E4)",
              rho / ratio(8164, 10000), ratio(368, 1000));
   proof.less("0.368 < 0.37: the contradiction that gives |x - v| <= k1", ratio(368, 1000),
              ratio(37, 100));
   Chain56 ch{c55, ratio(123, 1000), ratio(12802, 10000)};
-  proof.less_eq("exact threshold k1(0.3) = 1 - sqrt(1 - (rho/0.817)^2) <= 0.074", ch.k1(rho),
-                k1);
+  proof.less_eq("exact threshold k1(0.3) = 1 - sqrt(1 - (rho/0.817)^2) <= 0.074", ch.k1(rho), k1);
   proof.greater_eq("(3) sqrt(2/k1 - 1) >= 5", sqrt_nonneg(2 / k1 - 1), Interval(5));
   proof.greater("(6) 5 (1/rho - 1) - 1 > 10.6", 5 * (1 / rho - 1) - 1, ratio(106, 10));
   Interval c7 = ratio(123, 1000) * ratio(12802, 10000);
@@ -63,14 +62,12 @@ int main() {
                    ratio(95, 1000) * ratio(106, 10), Interval(1));
   proof.greater_eq("(8) 0.175 * 6.3 - 0.095 >= 1 (coefficient of |v - t|)",
                    ratio(175, 1000) * ratio(63, 10) - ratio(95, 1000), Interval(1));
-  proof.less_eq("(8) 0.095 + 0.175 <= 0.27 (in thousandths)", Interval(95 + 175),
-                Interval(270));
+  proof.less_eq("(8) 0.095 + 0.175 <= 0.27 (in thousandths)", Interval(95 + 175), Interval(270));
   proof.less_eq("(4) 0.27 <= rho = 0.3", ratio(27, 100), rho);
   proof.note("(8) exact best constant K(0.3) of this chain", ch.k8(rho));
   proof.less_eq("(5) case (b): 0.0114 (1 + r) + r <= 0.0931", ratio(114, 10000) * (1 + r) + r,
                 ratio(931, 10000));
-  proof.less_eq("(5) 0.0931 <= 0.123 (case (a) dominates)", ratio(931, 10000),
-                ratio(123, 1000));
+  proof.less_eq("(5) 0.0931 <= 0.123 (case (a) dominates)", ratio(931, 10000), ratio(123, 1000));
   proof.less_eq("(5b) 1 / 0.817 <= 1.224", 1 / c55, ratio(1224, 1000));
   return proof.finish();
 }

@@ -48,14 +48,17 @@ int main() {
   Chain56 c{ratio(8164, 10000), ratio(14265, 100000), ratio(15126, 10000)};
   // A(rho) decreases in rho; beyond rho1 (A < 1/2) K >= 2 (1 + c5 c51) > 0.8 > rho, or
   // A <= 0 and (6) gives nothing; below rho1 B&B.
-  double rho1 = std::ceil(bisect_root([&](const Interval& x) { return c.a6(x) - ratio(1, 2); },
-                                      0.3, 0.8) * 1e4) / 1e4;
+  double rho1 =
+      std::ceil(bisect_root([&](const Interval& x) { return c.a6(x) - ratio(1, 2); }, 0.3, 0.8) *
+                1e4) /
+      1e4;
   proof.less("(C) A(rho1) < 1/2 at rho1 = " + std::to_string(rho1) + " (A decreasing)",
              c.a6(Interval(rho1)), ratio(1, 2));
   Objective f = [&](const Box& bx) { return Eval{c.slack4(bx[0]), Feasible::kAll}; };
   BnbResult m = maximize(f, {hull(0.01, rho1)}, 1e-9, 100000);
-  proof.less("(C) c51 = 1.5126, c5 = 0.14265: max over rho in [0.01, rho1] of rho - K(rho) < 0"
-             " (no rho is admissible; rho < 0.01 fails since K >= c5 c51)",
-             m.extremum, Interval(0));
+  proof.less(
+      "(C) c51 = 1.5126, c5 = 0.14265: max over rho in [0.01, rho1] of rho - K(rho) < 0"
+      " (no rho is admissible; rho < 0.01 fails since K >= c5 c51)",
+      m.extremum, Interval(0));
   return proof.finish();
 }

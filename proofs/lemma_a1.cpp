@@ -16,12 +16,10 @@ int main() {
   const Interval k = ratio(1536, 1000);
   proof.less_eq("(a) k r <= 0.123", k * r, ratio(123, 1000));
   Interval sv = angle_sv(k, r);
-  proof.less("(a) asin(1/(k(1-r))) + asin(r/(1-r)) < 47.2deg [AB99]", to_deg(sv),
-             ratio(472, 10));
+  proof.less("(a) asin(1/(k(1-r))) + asin(r/(1-r)) < 47.2deg [AB99]", to_deg(sv), ratio(472, 10));
   Interval sp = angle_sp(r);
   proof.less("(a) 2 asin(r/(1-r)) < 12.8deg", to_deg(sp), ratio(128, 10));
-  proof.less("(a) angle vsp <= angle(sv,n) + angle(n,sp) < 60deg", to_deg(sv + sp),
-             Interval(60));
+  proof.less("(a) angle vsp <= angle(sv,n) + angle(n,sp) < 60deg", to_deg(sv + sp), Interval(60));
 
   BnbResult m = a1b_max_distance(k * r, sp, 400000);
   proof.note("(b) B&B boxes " + std::to_string(m.boxes) +

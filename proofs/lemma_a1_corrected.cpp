@@ -16,8 +16,7 @@ int main() {
   const Interval k = ratio(1537, 1000);
   proof.less("(a) k = 1.537: angle(sv,n) + angle(n,sp) < 60deg", to_deg(angle_sv(k, r) + sp),
              Interval(60));
-  proof.less_eq("(a) k r <= 0.123 (the lemma's conclusion survives)", k * r,
-                ratio(123, 1000));
+  proof.less_eq("(a) k r <= 0.123 (the lemma's conclusion survives)", k * r, ratio(123, 1000));
   const Interval a = ratio(123, 1000);
   BnbResult m = a1b_max_distance(a, sp, 400000);
   proof.note("(b) B&B boxes " + std::to_string(m.boxes) +

@@ -19,8 +19,10 @@ int main() {
   proof.greater("rho >= (1-d)/2, d <= 0.0424 (B&B): exterior angle > 120deg",
                 to_deg(a2_exterior_angle(half.extremum)), Interval(120));
   BnbResult lfs = a2_max_cos(d, 1 / ratio(12802, 10000), beta0);
-  proof.note("rho >= (1-d)/1.2802 (conditional on Lemma 4.3a), d <= 0.0424: min exterior "
-             "angle (deg)", to_deg(a2_exterior_angle(lfs.extremum)));
+  proof.note(
+      "rho >= (1-d)/1.2802 (conditional on Lemma 4.3a), d <= 0.0424: min exterior "
+      "angle (deg)",
+      to_deg(a2_exterior_angle(lfs.extremum)));
   BnbResult lfs355 = a2_max_cos(ratio(355, 10000), 1 / ratio(12802, 10000), beta0);
   proof.note("rho >= (1-d)/1.2802, d <= 0.0355: min exterior angle (deg)",
              to_deg(a2_exterior_angle(lfs355.extremum)));

@@ -16,13 +16,13 @@ int main() {
   const Interval kappa = ratio(866, 1000);
   proof.greater("edge: cos 30deg > 0.866", cos(psi / 2), kappa);
   EdgeCheck e = a3_edge(psi, kappa);
-  proof.less("edge (i): max(a0, b0) > T for admissible balls (B&B max of the constraint "
-             "on [0,T]^2 < 0)",
-             e.corner.extremum, Interval(0));
+  proof.less(
+      "edge (i): max(a0, b0) > T for admissible balls (B&B max of the constraint "
+      "on [0,T]^2 < 0)",
+      e.corner.extremum, Interval(0));
   proof.greater("edge (ii): g = cos(tau) - a0 + b0 cos(psi) > 0 on admissible a0 < b0 (B&B)",
                 e.g.extremum, Interval(0));
-  proof.greater("triangle: sqrt((1 + 2 cos 60deg)/3) > 0.817", a3_triangle(psi),
-                ratio(817, 1000));
+  proof.greater("triangle: sqrt((1 + 2 cos 60deg)/3) > 0.817", a3_triangle(psi), ratio(817, 1000));
   proof.less_eq("1 / 0.817 <= 1.224 (used in Lemma 5.6 (b))", 1 / ratio(817, 1000),
                 ratio(1224, 1000));
   return proof.finish();

@@ -16,8 +16,7 @@ int main() {
   proof.less_eq("(A) 1 / 0.8164 <= 1.2249", 1 / ratio(8164, 10000), ratio(12249, 10000));
   const Interval psi_b = deg(180) - deg(ratio(1108, 10));
   const Interval kappa_b = ratio(823, 1000);
-  proof.greater("(B) edge: cos(psi/2) > 0.823, psi = 180 - 110.8 deg", cos(psi_b / 2),
-                kappa_b);
+  proof.greater("(B) edge: cos(psi/2) > 0.823, psi = 180 - 110.8 deg", cos(psi_b / 2), kappa_b);
   EdgeCheck e = a3_edge(psi_b, kappa_b);
   proof.less("(B) edge (i): max(a0, b0) > T (B&B)", e.corner.extremum, Interval(0));
   proof.greater("(B) edge (ii): g > 0 on admissible a0 < b0 (B&B)", e.g.extremum, Interval(0));

@@ -24,8 +24,7 @@ int main() {
   Interval p = pi();
   proof.less("pi < 355/113", p, ratio(355, 113));
   proof.greater("pi > 3.14159265358979", p, ratio(314159265358979L, 100000000000000L));
-  proof.less("width(pi) < 1e-70", hi(p) - lo(p) < 1e-70 ? Interval(0) : Interval(1),
-             ratio(1, 2));
+  proof.less("width(pi) < 1e-70", hi(p) - lo(p) < 1e-70 ? Interval(0) : Interval(1), ratio(1, 2));
   proof.less("|sin(pi)| < 1e-70", abs(sin(p)), pow(Interval(10), -70));
   proof.less("|sqrt(2)^2 - 2| < 1e-70", abs(sqrt(Interval(2)) * sqrt(Interval(2)) - 2),
              pow(Interval(10), -70));
@@ -68,8 +67,8 @@ int main() {
   Verdict v2 = inner.less("1/3 < 1/3", ratio(1, 3), ratio(1, 3));
   Verdict v3 = inner.less_eq("1 <= 1 (exact)", Interval(1), Interval(1));
   std::cout.rdbuf(old);
-  proof.greater("a false claim is reported FAILS",
-                Interval(v1 == Verdict::kFails ? 1 : 0), ratio(1, 2));
+  proof.greater("a false claim is reported FAILS", Interval(v1 == Verdict::kFails ? 1 : 0),
+                ratio(1, 2));
   proof.greater("an undecidable claim is reported UNDECIDED",
                 Interval(v2 == Verdict::kUndecided ? 1 : 0), ratio(1, 2));
   proof.greater("an exact equality passes <=", Interval(v3 == Verdict::kHolds ? 1 : 0),

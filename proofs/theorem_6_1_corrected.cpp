@@ -28,10 +28,10 @@ void range(Proof& proof, const std::string& name, const Chain56& ch, const Inter
   proof.greater(name + ": rho~ = 0.03 valid for all rho in [" + std::to_string(lo) + ", " +
                     std::to_string(hi) + "] (B&B)",
                 m.extremum, Interval(0));
-  proof.less(name + ": not valid at rho = " + std::to_string(lo - 1e-3),
-             slack(Interval(lo - 1e-3)), Interval(0));
-  proof.less(name + ": not valid at rho = " + std::to_string(hi + 1e-3),
-             slack(Interval(hi + 1e-3)), Interval(0));
+  proof.less(name + ": not valid at rho = " + std::to_string(lo - 1e-3), slack(Interval(lo - 1e-3)),
+             Interval(0));
+  proof.less(name + ": not valid at rho = " + std::to_string(hi + 1e-3), slack(Interval(hi + 1e-3)),
+             Interval(0));
 }
 
 }  // namespace
