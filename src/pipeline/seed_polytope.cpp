@@ -155,7 +155,11 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples, const SeedOp
   dual_stage.finish();
 
   Report::Stage collapse_stage(rep, "collapse");
-  const complex::CollapseResult collapsed = complex::collapse_free_faces(k);
+  // Depth-first collapse eats through a thick shell from one side, which ends on a closed
+  // surface; breadth-first fronts from both sides meet in non-manifold walls (measured in
+  // include/rstruct/complex/collapse.hpp).
+  const complex::CollapseResult collapsed =
+      complex::collapse_free_faces(k, complex::CollapseOrder::depth_first);
   const complex::SimplicialComplex& result = collapsed.complex;
   collapse_stage.finish();
 

@@ -65,6 +65,8 @@ TEST_CASE("sphere: K and the output have the sphere's Betti numbers") {
     CHECK(seed.labeling.is_clean());
     CHECK(seed.betti_k == rstruct::complex::BettiNumbers{{1, 0, 1, 0}});
     CHECK(seed.betti_output == rstruct::complex::BettiNumbers{{1, 0, 1, 0}});
+    CHECK(seed.manifold.is_closed_2_manifold);
+    CHECK(seed.oriented);
     CHECK(seed.warnings.empty());
     check_structure(samples, seed);
   }
@@ -81,6 +83,8 @@ TEST_CASE("torus (rotated, translated): genus 1 survives pruning at every shrink
     const SeedPolytope seed = rstruct::pipeline::compute_seed_polytope(samples, options);
     CHECK(seed.betti_k == rstruct::complex::BettiNumbers{{1, 2, 1, 0}});
     CHECK(seed.betti_output == rstruct::complex::BettiNumbers{{1, 2, 1, 0}});
+    CHECK(seed.manifold.is_closed_2_manifold);
+    CHECK(seed.oriented);
     check_structure(samples, seed);
     CHECK(seed.kept.size() <= previous_kept);
     if (shrink > 0) {
