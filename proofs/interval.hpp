@@ -158,11 +158,15 @@ inline BnbResult minimize(const Objective& f, const Box& box, double tol, long m
       result.point = pt;
     }
   };
+  Real min_discarded = std::numeric_limits<double>::infinity();  // lower ends of pruned boxes
   auto push = [&](Box b) {
     Eval e = f(b);
     ++result.boxes;
     if (e.feasible == Feasible::kNone) return;
-    if (lo(e.value) > best_upper) return;
+    if (lo(e.value) > best_upper) {
+      if (lo(e.value) < min_discarded) min_discarded = lo(e.value);
+      return;
+    }
     queue.push(Node{lo_d(e.value), std::move(b), e.value});
   };
   push(box);
@@ -170,7 +174,10 @@ inline BnbResult minimize(const Objective& f, const Box& box, double tol, long m
   while (!queue.empty()) {
     Node n = queue.top();
     queue.pop();
-    if (lo(n.value) > best_upper) continue;
+    if (lo(n.value) > best_upper) {
+      if (lo(n.value) < min_discarded) min_discarded = lo(n.value);
+      continue;
+    }
     if (n.key > prove_above) {  // n has the smallest key: every remaining box is above
       lower = Real(n.key);
       result.converged = true;
@@ -199,7 +206,9 @@ inline BnbResult minimize(const Objective& f, const Box& box, double tol, long m
   if (queue.empty() && lower == std::numeric_limits<double>::infinity()) {
     // Every box was infeasible or pruned: with a witness, the witness is optimal up to
     // rounding; without one, the feasible set is empty (the enclosure is [+inf, +inf]).
-    lower = best_upper;
+    // Every feasible point lies in a pruned box: the minimum is >= the smallest lower end of
+    // a pruned box (and <= best_upper).
+    lower = min_discarded < best_upper ? min_discarded : best_upper;
     result.converged = true;
   }
   if (best_upper == std::numeric_limits<double>::infinity()) best_upper = lower;
