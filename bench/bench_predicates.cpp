@@ -111,9 +111,23 @@ Inputs near_degenerate_inputs(std::size_t n, std::mt19937_64& rng) {
   return in;
 }
 
+/// Coordinates with random exponents in [-500, 500]: the filters' guards fail and the
+/// exact stage needs GMP (hundreds of bits between the smallest and largest input).
+Inputs wide_inputs(std::size_t n, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> d(0.5, 1);
+  std::uniform_int_distribution<int> e(-500, 500);
+  Inputs in;
+  for (std::size_t i = 0; i < n + 5; ++i) {
+    in.p.push_back({std::ldexp(d(rng), e(rng)), std::ldexp(d(rng), e(rng)),
+                    std::ldexp(d(rng), e(rng))});
+    in.w.push_back(0);
+  }
+  return in;
+}
+
 struct Row {
   std::string name;
-  double ns_random, ns_plain, ns_near, failure_rate;
+  double ns_random, ns_plain, ns_near, failure_rate, ns_wide = -1;
 };
 
 }  // namespace
@@ -125,6 +139,7 @@ int main(int argc, char** argv) {
   std::mt19937_64 rng(12345);
   const Inputs rnd = random_inputs(calls, rng);
   const Inputs near = near_degenerate_inputs(calls, rng);
+  const Inputs wide = wide_inputs(calls / 50, rng);
   long checksum = 0;
   auto P = [](const Inputs& in, std::size_t i) -> const Point3& { return in.p[i]; };
   auto W = [](const Inputs& in, std::size_t i) { return WeightedPoint{in.p[i], in.w[i]}; };
@@ -144,6 +159,9 @@ int main(int argc, char** argv) {
       Point3 d = a + (b - a) * 0.5;  // exactly on segment ab up to rounding
       d.z = std::nextafter(d.z, 1e300);
       return long(pr::orient3d(a, b, c, d));
+    }, checksum);
+    r.ns_wide = time_ns(calls / 50, runs, [&](std::size_t i) {
+      return long(pr::orient3d(P(wide, i), P(wide, i + 1), P(wide, i + 2), P(wide, i + 3)));
     }, checksum);
     long undecided = 0;
     for (std::size_t i = 0; i < calls; ++i) {
@@ -166,6 +184,10 @@ int main(int argc, char** argv) {
     r.ns_near = time_ns(calls / 20, runs, [&](std::size_t i) {
       return long(pr::insphere(P(near, i), P(near, i + 1), P(near, i + 2), P(near, i + 3),
                                P(near, i + 4)));
+    }, checksum);
+    r.ns_wide = time_ns(calls / 50, runs, [&](std::size_t i) {
+      return long(pr::insphere(P(wide, i), P(wide, i + 1), P(wide, i + 2), P(wide, i + 3),
+                               P(wide, i + 4)));
     }, checksum);
     long undecided = 0;
     for (std::size_t i = 0; i < calls; ++i) {
@@ -211,12 +233,12 @@ int main(int argc, char** argv) {
   }
   std::printf("# bench_predicates: %zu calls/run, %s of %d runs (shared machine: compare "
               "ratios only)\n", calls, g_use_min ? "minimum" : "median", runs);
-  std::printf("%-26s %12s %12s %8s %14s %8s %14s\n", "predicate", "filtered_ns", "plain_ns",
-              "ratio", "near_degen_ns", "x_filt", "filter_fail");
+  std::printf("%-26s %12s %12s %8s %14s %8s %14s %12s\n", "predicate", "filtered_ns",
+              "plain_ns", "ratio", "near_degen_ns", "x_filt", "filter_fail", "gmp_wide_ns");
   for (const Row& r : rows) {
-    std::printf("%-26s %12.2f %12.2f %8.2f %14.1f %8.1f %14.3g\n", r.name.c_str(), r.ns_random,
-                r.ns_plain, r.ns_plain > 0 ? r.ns_random / r.ns_plain : 0.0, r.ns_near,
-                r.ns_near / r.ns_random, r.failure_rate);
+    std::printf("%-26s %12.2f %12.2f %8.2f %14.1f %8.1f %14.3g %12.1f\n", r.name.c_str(),
+                r.ns_random, r.ns_plain, r.ns_plain > 0 ? r.ns_random / r.ns_plain : 0.0,
+                r.ns_near, r.ns_near / r.ns_random, r.failure_rate, r.ns_wide);
   }
   std::printf("checksum %ld\n", checksum);
   return 0;
