@@ -48,8 +48,8 @@ void bench_r_sample(const Surface& s, double r, int runs) {
 int main(int argc, char** argv) {
   const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
   std::printf("# medians over %d runs; other processes may load the machine\n", runs);
-  std::printf("%-30s %6s %9s %9s %9s %10s %10s %10s\n", "surface", "r", "points", "gen_s",
-              "cert_s", "certified", "grid_max", "leaf_cells");
+  std::printf("%-30s %6s %9s %9s %9s %10s %10s %10s\n", "surface", "r", "points", "gen_s", "cert_s",
+              "certified", "grid_max", "leaf_cells");
   const Sphere sphere(1.0);
   const Torus torus(3.0, 1.0);
   const Ellipsoid ellipsoid(3.0, 2.0, 1.0);

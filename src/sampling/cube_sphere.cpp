@@ -36,8 +36,7 @@ CubeSphereSpeeds cube_sphere_speed_bounds(const ParamCell& cell) {
   const double vmin = min_abs_over(cell.v0, cell.v1);
   const double vmax = max_abs_over(cell.v0, cell.v1);
   const double denominator = 1.0 + umin * umin + vmin * vmin;
-  return {std::sqrt(1.0 + vmax * vmax) / denominator,
-          std::sqrt(1.0 + umax * umax) / denominator};
+  return {std::sqrt(1.0 + vmax * vmax) / denominator, std::sqrt(1.0 + umax * umax) / denominator};
 }
 
 }  // namespace rstruct::sampling

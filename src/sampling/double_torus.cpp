@@ -10,10 +10,18 @@
 namespace rstruct::sampling {
 
 DoubleTorus::DoubleTorus(DoubleTorusParameters parameters) : p_(parameters) {
-  const double values[] = {p_.big_major,  p_.big_minor,      p_.small_major,
+  const double values[] = {p_.big_major,   p_.big_minor,      p_.small_major,
                            p_.small_minor, p_.small_centre_x, p_.blend};
   for (double v : values) {
     if (!std::isfinite(v)) throw InvalidInput("double torus: parameters must be finite");
+  }
+  for (double v : {p_.big_major, p_.big_minor, p_.small_major, p_.small_minor, p_.blend}) {
+    if (!is_supported_length(v)) {
+      throw InvalidInput("double torus: radii and blend must be in [1e-90, 1e90]");
+    }
+  }
+  if (std::fabs(p_.small_centre_x) > kMaxLength) {
+    throw InvalidInput("double torus: centre offset out of range");
   }
   if (p_.big_minor <= 0.0 || p_.small_minor <= 0.0 || p_.big_major <= p_.big_minor ||
       p_.small_major <= p_.small_minor || p_.blend <= 0.0) {
@@ -23,9 +31,8 @@ DoubleTorus::DoubleTorus(DoubleTorusParameters parameters) : p_(parameters) {
 
 std::string DoubleTorus::name() const {
   std::ostringstream out;
-  out << "double-torus(R1=" << p_.big_major << ", a1=" << p_.big_minor
-      << ", R2=" << p_.small_major << ", a2=" << p_.small_minor << ", c2=" << p_.small_centre_x
-      << ", k=" << p_.blend << ")";
+  out << "double-torus(R1=" << p_.big_major << ", a1=" << p_.big_minor << ", R2=" << p_.small_major
+      << ", a2=" << p_.small_minor << ", c2=" << p_.small_centre_x << ", k=" << p_.blend << ")";
   return out.str();
 }
 

@@ -113,9 +113,9 @@ void closest_sorted(const double* e, const double* y, double* x, int n) {
 std::array<double, 3> closest_point_on_ellipsoid(const std::array<double, 3>& axes,
                                                  const std::array<double, 3>& y) {
   std::array<int, 3> order{0, 1, 2};
-  std::stable_sort(order.begin(), order.end(),
-                   [&](int i, int j) { return axes[static_cast<std::size_t>(i)] >
-                                              axes[static_cast<std::size_t>(j)]; });
+  std::stable_sort(order.begin(), order.end(), [&](int i, int j) {
+    return axes[static_cast<std::size_t>(i)] > axes[static_cast<std::size_t>(j)];
+  });
   std::array<double, 3> e{}, ya{}, x{};
   for (std::size_t k = 0; k < 3; ++k) {
     const auto i = static_cast<std::size_t>(order[k]);

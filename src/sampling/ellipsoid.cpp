@@ -13,9 +13,10 @@ namespace rstruct::sampling {
 
 Ellipsoid::Ellipsoid(double a, double b, double c) : axes_{a, b, c} {
   for (double e : axes_) {
-    if (!std::isfinite(e) || e <= 0.0) {
+    if (!is_supported_length(e)) {
       std::ostringstream msg;
-      msg << "ellipsoid: semi-axes must be finite and > 0, got " << a << ", " << b << ", " << c;
+      msg << "ellipsoid: semi-axes must be in [" << kMinLength << ", " << kMaxLength << "], got "
+          << a << ", " << b << ", " << c;
       throw InvalidInput(msg.str());
     }
   }
@@ -71,9 +72,9 @@ std::optional<Point3> Ellipsoid::nearest_inner_medial_point(const Point3& x) con
 std::string Ellipsoid::medial_axis_description() const {
   std::ostringstream out;
   const char* names = "xyz";
-  out << "inner only: the filled ellipse with semi-axis " << alpha_ << " along "
-      << names[order_[0]] << " and " << beta_ << " along " << names[order_[1]] << " in the plane "
-      << names[order_[2]] << " = 0";
+  out << "inner only: the filled ellipse with semi-axis " << alpha_ << " along " << names[order_[0]]
+      << " and " << beta_ << " along " << names[order_[1]] << " in the plane " << names[order_[2]]
+      << " = 0";
   return out.str();
 }
 
@@ -133,8 +134,8 @@ double Ellipsoid::area() const {
   const double cos_phi = c / a;
   const double e = std::ellint_2(k, phi);
   const double f = std::ellint_1(k, phi);
-  return 2.0 * pi * c * c + 2.0 * pi * a * b * (e * sin_phi * sin_phi + f * cos_phi * cos_phi) /
-                                sin_phi;
+  return 2.0 * pi * c * c +
+         2.0 * pi * a * b * (e * sin_phi * sin_phi + f * cos_phi * cos_phi) / sin_phi;
 }
 
 }  // namespace rstruct::sampling

@@ -50,7 +50,8 @@ struct Grid {
 class Mesher {
  public:
   Mesher(const Surface& surface, const Grid& grid) : surface_(surface), grid_(grid) {
-    for (auto& ids : edge_ids_) ids.assign(static_cast<std::size_t>(7 * grid_.nx * grid_.ny), kNone);
+    for (auto& ids : edge_ids_)
+      ids.assign(static_cast<std::size_t>(7 * grid_.nx * grid_.ny), kNone);
   }
 
   TriangleMesh run() {
@@ -95,8 +96,8 @@ class Mesher {
     for (const auto& tet : tets) tetrahedron(i, j, k, tet, v);
   }
 
-  void tetrahedron(std::int64_t i, std::int64_t j, std::int64_t k,
-                   const std::array<Corner, 4>& tet, const std::array<double, 8>& v) {
+  void tetrahedron(std::int64_t i, std::int64_t j, std::int64_t k, const std::array<Corner, 4>& tet,
+                   const std::array<double, 8>& v) {
     std::array<int, 4> inside{}, outside{};
     int n_in = 0, n_out = 0;
     for (int t = 0; t < 4; ++t) {
@@ -129,10 +130,8 @@ class Mesher {
     const int a = inside[0], b = inside[1], c = outside[0], d = outside[1];
     // The quad a-c, a-d, b-d, b-c (consecutive edges share a tetrahedron vertex), split
     // into two triangles, each with an inside reference vertex on two of its edges.
-    emit({cut(a, c), cut(a, d), cut(b, d)}, {half(a, c), half(a, d), half(b, d)}, twice(a),
-         true);
-    emit({cut(a, c), cut(b, d), cut(b, c)}, {half(a, c), half(b, d), half(b, c)}, twice(b),
-         true);
+    emit({cut(a, c), cut(a, d), cut(b, d)}, {half(a, c), half(a, d), half(b, d)}, twice(a), true);
+    emit({cut(a, c), cut(b, d), cut(b, c)}, {half(a, c), half(b, d), half(b, c)}, twice(b), true);
   }
 
   /// Twice the midpoint of tet vertices a and b, in cube-local integer coordinates.
@@ -150,8 +149,8 @@ class Mesher {
   /// so its sign is the same for the true vertices and for the midpoints: the decision is
   /// exact integer arithmetic. The normal points away from r iff that determinant is > 0;
   /// we want that when r is inside.
-  void emit(std::array<std::uint32_t, 3> tri, const std::array<Corner, 3>& mid,
-            const Corner& ref, bool ref_inside) {
+  void emit(std::array<std::uint32_t, 3> tri, const std::array<Corner, 3>& mid, const Corner& ref,
+            bool ref_inside) {
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) return;
     std::array<std::array<long long, 3>, 3> m{};
     for (std::size_t r = 0; r < 3; ++r) {
@@ -170,15 +169,15 @@ class Mesher {
   /// an edge is identified by its lower end and the direction q − p ∈ {0, 1}³ \ {0}; ids
   /// are kept for the two node layers of the current cube layer.
   std::uint32_t edge_vertex(std::int64_t i, std::int64_t j, std::int64_t k,
-                            const std::array<Corner, 4>& tet, const std::array<double, 8>& v,
-                            int a, int b) {
+                            const std::array<Corner, 4>& tet, const std::array<double, 8>& v, int a,
+                            int b) {
     const Corner* p = &tet[static_cast<std::size_t>(a)];
     const Corner* q = &tet[static_cast<std::size_t>(b)];
     if ((*p)[0] + (*p)[1] + (*p)[2] > (*q)[0] + (*q)[1] + (*q)[2]) std::swap(p, q);
     const int direction = ((*q)[0] - (*p)[0]) + 2 * ((*q)[1] - (*p)[1]) + 4 * ((*q)[2] - (*p)[2]);
     RSTRUCT_ASSERT(direction >= 1 && direction <= 7);
-    const auto slot = static_cast<std::size_t>(
-        7 * ((i + (*p)[0]) + grid_.nx * (j + (*p)[1])) + (direction - 1));
+    const auto slot =
+        static_cast<std::size_t>(7 * ((i + (*p)[0]) + grid_.nx * (j + (*p)[1])) + (direction - 1));
     std::uint32_t& id = edge_ids_[static_cast<std::size_t>((*p)[2])][slot];
     if (id == kNone) {
       id = static_cast<std::uint32_t>(mesh_.vertices.size());

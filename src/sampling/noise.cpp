@@ -16,8 +16,9 @@ void add_gaussian_noise(std::vector<Point3>& points, double sigma, NoiseScale sc
     throw InvalidInput(msg.str());
   }
   if (scale == NoiseScale::kLfs && (surface == nullptr || !surface->has_known_lfs())) {
-    throw InvalidInput("noise relative to lfs needs a surface with known lfs (sphere, "
-                       "ellipsoid, torus); use absolute noise");
+    throw InvalidInput(
+        "noise relative to lfs needs a surface with known lfs (sphere, "
+        "ellipsoid, torus); use absolute noise");
   }
   if (sigma == 0.0) return;
   Random random(seed);

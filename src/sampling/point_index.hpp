@@ -5,9 +5,8 @@
 
 #include <cstddef>
 #include <memory>
-#include <vector>
-
 #include <nanoflann.hpp>
+#include <vector>
 
 #include "rstruct/geometry/vec3.hpp"
 
@@ -16,8 +15,7 @@ namespace rstruct::sampling {
 class PointIndex {
  public:
   explicit PointIndex(const std::vector<Point3>& points)
-      : adaptor_{&points},
-        tree_(3, adaptor_, nanoflann::KDTreeSingleIndexAdaptorParams(12)) {}
+      : adaptor_{&points}, tree_(3, adaptor_, nanoflann::KDTreeSingleIndexAdaptorParams(12)) {}
 
   bool empty() const { return adaptor_.points->empty(); }
 

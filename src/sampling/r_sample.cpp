@@ -1,8 +1,8 @@
 #include "rstruct/sampling/r_sample.hpp"
 
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <unordered_map>
 #include <vector>
@@ -171,9 +171,8 @@ std::vector<Point3> jittered_sample(const Surface& surface, double target,
 
 /// Keeps violations (largest ratio first) at least half_gap·lfs apart, with a hash grid.
 std::vector<Point3> thin(std::vector<Violation> v, double half_gap) {
-  std::sort(v.begin(), v.end(), [](const Violation& a, const Violation& b) {
-    return a.ratio > b.ratio;
-  });
+  std::sort(v.begin(), v.end(),
+            [](const Violation& a, const Violation& b) { return a.ratio > b.ratio; });
   double lmin = HUGE_VAL;
   for (const Violation& x : v) lmin = std::min(lmin, x.lfs);
   const double h = half_gap * lmin;
@@ -246,8 +245,8 @@ void fill_until_certified(const Surface& surface, double r, double fill,
 
 }  // namespace
 
-Certificate certify_r_sample(const Surface& surface, const std::vector<Point3>& samples,
-                             double r, const CertifyOptions& options) {
+Certificate certify_r_sample(const Surface& surface, const std::vector<Point3>& samples, double r,
+                             const CertifyOptions& options) {
   check_inputs(surface, r);
   for (std::size_t i = 0; i < samples.size(); ++i) {
     if (!is_finite(samples[i])) {

@@ -28,8 +28,7 @@ RigidTransform RigidTransform::random_rotation(Random& random) {
   // A standard Gaussian in R⁴ normalised is uniform on S³, and unit quaternions map onto
   // SO(3) two-to-one with the Haar measure as image.
   for (;;) {
-    const double w = random.normal(), x = random.normal(), y = random.normal(),
-                 z = random.normal();
+    const double w = random.normal(), x = random.normal(), y = random.normal(), z = random.normal();
     if (w * w + x * x + y * y + z * z > 1e-6) return from_quaternion(w, x, y, z);
   }
 }
@@ -39,7 +38,8 @@ double RigidTransform::orthogonality_defect() const {
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
       double s = 0.0;
-      for (int k = 0; k < 3; ++k) s += q[static_cast<std::size_t>(3 * k + i)] * q[static_cast<std::size_t>(3 * k + j)];
+      for (int k = 0; k < 3; ++k)
+        s += q[static_cast<std::size_t>(3 * k + i)] * q[static_cast<std::size_t>(3 * k + j)];
       worst = std::max(worst, std::fabs(s - (i == j ? 1.0 : 0.0)));
     }
   }
@@ -54,6 +54,11 @@ TransformedSurface::TransformedSurface(std::shared_ptr<const Surface> base,
     if (!std::isfinite(v)) throw InvalidInput("transformed surface: non-finite rotation");
   }
   if (!is_finite(transform_.t)) throw InvalidInput("transformed surface: non-finite translation");
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (std::fabs(transform_.t[i]) > 1e15) {
+      throw InvalidInput("transformed surface: translation components must be at most 1e15");
+    }
+  }
   const double defect = transform_.orthogonality_defect();
   if (defect > 1e-12) {
     std::ostringstream msg;
@@ -62,12 +67,13 @@ TransformedSurface::TransformedSurface(std::shared_ptr<const Surface> base,
   }
   const Box3 box = base_->bounding_box();
   const double extent = std::max(norm(box.lo), norm(box.hi));
-  const double tmax = std::max({std::fabs(transform_.t.x), std::fabs(transform_.t.y),
-                                std::fabs(transform_.t.z)});
+  const double tmax =
+      std::max({std::fabs(transform_.t.x), std::fabs(transform_.t.y), std::fabs(transform_.t.z)});
   // Each coordinate of Qp + t takes 5 roundings, each ≤ 2⁻⁵³ of a quantity ≤ |p| + |t|;
   // Q's deviation from the nearest rotation moves points by ≤ 3·defect·|p|. The inverse
   // map is bounded the same way with |x| ≤ |p| + |t|. 2⁻⁴⁸ is a generous multiple.
-  pad_ = 0x1.0p-48 * (2.0 * extent + 2.0 * std::sqrt(3.0) * tmax) + 3.0 * (defect + 0x1.0p-50) * extent;
+  pad_ = 0x1.0p-48 * (2.0 * extent + 2.0 * std::sqrt(3.0) * tmax) +
+         3.0 * (defect + 0x1.0p-50) * extent;
 }
 
 std::string TransformedSurface::name() const {
@@ -80,8 +86,8 @@ Box3 TransformedSurface::bounding_box() const {
   const Box3 b = base_->bounding_box();
   Box3 out;
   for (int c = 0; c < 8; ++c) {
-    out.add(transform_.apply({(c & 1) ? b.hi.x : b.lo.x, (c & 2) ? b.hi.y : b.lo.y,
-                              (c & 4) ? b.hi.z : b.lo.z}));
+    out.add(transform_.apply(
+        {(c & 1) ? b.hi.x : b.lo.x, (c & 2) ? b.hi.y : b.lo.y, (c & 4) ? b.hi.z : b.lo.z}));
   }
   const Vec3 pad{pad_, pad_, pad_};
   out.lo -= pad;

@@ -10,9 +10,9 @@
 namespace rstruct::sampling {
 
 Sphere::Sphere(double radius) : radius_(radius) {
-  if (!std::isfinite(radius) || radius <= 0.0) {
+  if (!is_supported_length(radius)) {
     std::ostringstream msg;
-    msg << "sphere: radius must be finite and > 0, got " << radius;
+    msg << "sphere: radius must be in [" << kMinLength << ", " << kMaxLength << "], got " << radius;
     throw InvalidInput(msg.str());
   }
 }

@@ -11,10 +11,10 @@ namespace rstruct::sampling {
 
 Torus::Torus(double major_radius, double minor_radius)
     : major_(major_radius), minor_(minor_radius) {
-  if (!std::isfinite(major_) || !std::isfinite(minor_) || minor_ <= 0.0 || major_ <= minor_) {
+  if (!is_supported_length(major_) || !is_supported_length(minor_) || major_ <= minor_) {
     std::ostringstream msg;
-    msg << "torus: need finite radii with R > a > 0 (a ring torus), got R = " << major_
-        << ", a = " << minor_;
+    msg << "torus: need radii in [" << kMinLength << ", " << kMaxLength
+        << "] with R > a (a ring torus), got R = " << major_ << ", a = " << minor_;
     throw InvalidInput(msg.str());
   }
 }
@@ -97,8 +97,6 @@ CellReach Torus::cell_reach(const ParamCell& cell) const {
   return {speed_u * 0.5 * (cell.u1 - cell.u0) + pad, minor_ * 0.5 * (cell.v1 - cell.v0)};
 }
 
-double Torus::area() const {
-  return 4.0 * std::numbers::pi * std::numbers::pi * major_ * minor_;
-}
+double Torus::area() const { return 4.0 * std::numbers::pi * std::numbers::pi * major_ * minor_; }
 
 }  // namespace rstruct::sampling

@@ -37,14 +37,17 @@ Point3 point_in_triangle(const Point3& a, const Point3& b, const Point3& c, Rand
   return a * (1.0 - s) + b * (s * (1.0 - t)) + c * (s * t);
 }
 
-std::vector<Point3> sample_parametrized(const Surface& surface, std::size_t count,
-                                        Random& random) {
+std::vector<Point3> sample_parametrized(const Surface& surface, std::size_t count, Random& random) {
   std::vector<double> prefix;
   double total = 0.0;
   for (int chart = 0; chart < surface.chart_count(); ++chart) {
     const ParamCell d = surface.chart_domain(chart);
     total += (d.u1 - d.u0) * (d.v1 - d.v0) * surface.max_area_element(chart);
     prefix.push_back(total);
+  }
+  if (!(total > 0.0) || !std::isfinite(total)) {
+    throw InvalidInput("uniform sampling of " + surface.name() +
+                       ": the area bound is not a positive finite number");
   }
   std::vector<Point3> points;
   points.reserve(count);

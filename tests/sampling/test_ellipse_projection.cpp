@@ -1,12 +1,12 @@
 // Closest points on ellipsoids and filled ellipses against independent oracles: a
 // long-double bisection on the angle-free root equation, and brute-force minimisation over
 // a parametrization of the boundary.
-#include "rstruct/sampling/ellipse_projection.hpp"
+#include <rapidcheck/catch.h>
 
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <rapidcheck/catch.h>
 
+#include "rstruct/sampling/ellipse_projection.hpp"
 #include "rstruct/sampling/random.hpp"
 
 using rstruct::sampling::closest_point_on_ellipsoid;
@@ -90,8 +90,8 @@ TEST_CASE("filled-ellipse degenerate cases") {
 
 TEST_CASE("closest point on an ellipsoid: optimality and brute force") {
   rstruct::sampling::Random random(12345);
-  const std::array<std::array<double, 3>, 5> axes_list{{{3, 2, 1}, {1, 2, 3}, {2, 1, 1},
-                                                        {1.5, 1.5, 1}, {1, 1, 1}}};
+  const std::array<std::array<double, 3>, 5> axes_list{
+      {{3, 2, 1}, {1, 2, 3}, {2, 1, 1}, {1.5, 1.5, 1}, {1, 1, 1}}};
   for (const auto& axes : axes_list) {
     for (int trial = 0; trial < 200; ++trial) {
       const std::array<double, 3> y{random.uniform(-5, 5), random.uniform(-5, 5),
@@ -114,8 +114,8 @@ TEST_CASE("closest point on an ellipsoid: optimality and brute force") {
       const double r[3] = {y[0] - x[0], y[1] - x[1], y[2] - x[2]};
       const double cx = r[1] * g[2] - r[2] * g[1], cy = r[2] * g[0] - r[0] * g[2],
                    cz = r[0] * g[1] - r[1] * g[0];
-      REQUIRE(std::hypot(cx, cy, cz) <= 1e-12 * (1.0 + std::hypot(r[0], r[1], r[2])) *
-                                             std::hypot(g[0], g[1], g[2]));
+      REQUIRE(std::hypot(cx, cy, cz) <=
+              1e-12 * (1.0 + std::hypot(r[0], r[1], r[2])) * std::hypot(g[0], g[1], g[2]));
     }
   }
 }

@@ -1,7 +1,5 @@
 // Marching tetrahedra meshes: closed oriented 2-manifolds with the right Euler
 // characteristic; the double torus has genus 2.
-#include "rstruct/sampling/implicit_mesher.hpp"
-
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <map>
@@ -9,6 +7,7 @@
 
 #include "rstruct/core/error.hpp"
 #include "rstruct/sampling/double_torus.hpp"
+#include "rstruct/sampling/implicit_mesher.hpp"
 #include "rstruct/sampling/sphere.hpp"
 #include "rstruct/sampling/torus.hpp"
 

@@ -1,8 +1,6 @@
 // Certified r-samples (issue 2, "Done when"): sphere, three ellipsoids and the torus with
 // R/a = 3, at r = 0.08 and r = 0.04. Every certificate must hold (upper bound ≤ r) and is
 // checked independently: brute-force nearest sample (no kd-tree) at random surface points.
-#include "rstruct/sampling/r_sample.hpp"
-
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <memory>
@@ -10,6 +8,7 @@
 #include "rstruct/core/error.hpp"
 #include "rstruct/sampling/double_torus.hpp"
 #include "rstruct/sampling/ellipsoid.hpp"
+#include "rstruct/sampling/r_sample.hpp"
 #include "rstruct/sampling/rigid_transform.hpp"
 #include "rstruct/sampling/sphere.hpp"
 #include "rstruct/sampling/torus.hpp"
@@ -37,11 +36,12 @@ void check_certified_sample(const Surface& s, double r, std::uint64_t seed) {
   options.seed = seed;
   const RSample sample = generate_r_sample(s, r, options);
   const Certificate& c = sample.certificate;
-  std::printf("%-34s r=%.2f points=%7zu (initial %zu, added %zu, rounds %d) certified=%.5f "
-              "grid_max=%.5f cells=%zu gen=%.2fs cert=%.2fs\n",
-              s.name().c_str(), r, sample.points.size(), sample.initial_points,
-              sample.added_points, sample.rounds, c.upper_bound, c.grid_max, c.leaf_cells,
-              sample.generation_seconds, sample.certification_seconds);
+  std::printf(
+      "%-34s r=%.2f points=%7zu (initial %zu, added %zu, rounds %d) certified=%.5f "
+      "grid_max=%.5f cells=%zu gen=%.2fs cert=%.2fs\n",
+      s.name().c_str(), r, sample.points.size(), sample.initial_points, sample.added_points,
+      sample.rounds, c.upper_bound, c.grid_max, c.leaf_cells, sample.generation_seconds,
+      sample.certification_seconds);
   REQUIRE(c.certified);
   CHECK(c.upper_bound <= r);
   CHECK(c.grid_max <= c.upper_bound);
@@ -76,8 +76,8 @@ TEST_CASE("certified r-samples of the torus with R/a = 3") {
 }
 
 TEST_CASE("certified r-samples of ellipsoids with three axis ratios") {
-  for (const auto& axes : {std::array{1.5, 1.25, 1.0}, std::array{2.0, 1.5, 1.0},
-                           std::array{3.0, 2.0, 1.0}}) {
+  for (const auto& axes :
+       {std::array{1.5, 1.25, 1.0}, std::array{2.0, 1.5, 1.0}, std::array{3.0, 2.0, 1.0}}) {
     Ellipsoid e(axes[0], axes[1], axes[2]);
     check_certified_sample(e, 0.08, 5);
     check_certified_sample(e, 0.04, 6);

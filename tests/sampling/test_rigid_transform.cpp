@@ -1,13 +1,13 @@
 // Rigid transforms and transformed surfaces: everything moves consistently, also far from
 // the origin.
-#include "rstruct/sampling/rigid_transform.hpp"
+#include <rapidcheck/catch.h>
 
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <rapidcheck/catch.h>
 
 #include "rstruct/core/error.hpp"
 #include "rstruct/sampling/ellipsoid.hpp"
+#include "rstruct/sampling/rigid_transform.hpp"
 #include "rstruct/sampling/torus.hpp"
 #include "rstruct/sampling/uniform_sampling.hpp"
 
@@ -108,4 +108,11 @@ TEST_CASE("transformed surfaces reject bad transforms") {
   CHECK_THROWS_AS(TransformedSurface(base, t), InvalidInput);
   CHECK_THROWS_AS(TransformedSurface(nullptr, RigidTransform{}), InvalidInput);
   CHECK_THROWS_AS(RigidTransform::from_quaternion(0, 0, 0, 0), InvalidInput);
+}
+
+TEST_CASE("translations beyond 1e15 are rejected") {
+  const auto base = std::make_shared<Torus>(3.0, 1.0);
+  CHECK_NOTHROW(TransformedSurface(base, RigidTransform::translation({1e15, 0, 0})));
+  CHECK_THROWS_AS(TransformedSurface(base, RigidTransform::translation({0, -1e16, 0})),
+                  InvalidInput);
 }

@@ -1,12 +1,11 @@
 // The one-call API behind `rstruct sample`: shapes by name, parameters, r or n, rotation,
 // translation, noise, meshes, and the errors for inconsistent requests.
-#include "rstruct/sampling/sample_request.hpp"
-
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 
 #include "rstruct/core/error.hpp"
+#include "rstruct/sampling/sample_request.hpp"
 
 using namespace rstruct;
 using namespace rstruct::sampling;

@@ -19,10 +19,10 @@ using namespace rstruct::sampling;
 namespace {
 
 std::vector<std::shared_ptr<const Surface>> parametrized_surfaces() {
-  return {std::make_shared<Sphere>(1.0),           std::make_shared<Sphere>(0.25),
-          std::make_shared<Ellipsoid>(3, 2, 1),    std::make_shared<Ellipsoid>(1, 3, 2),
-          std::make_shared<Ellipsoid>(2, 1, 1),    std::make_shared<Ellipsoid>(1.5, 1.5, 1),
-          std::make_shared<Torus>(3.0, 1.0),       std::make_shared<Torus>(1.5, 1.0)};
+  return {std::make_shared<Sphere>(1.0),        std::make_shared<Sphere>(0.25),
+          std::make_shared<Ellipsoid>(3, 2, 1), std::make_shared<Ellipsoid>(1, 3, 2),
+          std::make_shared<Ellipsoid>(2, 1, 1), std::make_shared<Ellipsoid>(1.5, 1.5, 1),
+          std::make_shared<Torus>(3.0, 1.0),    std::make_shared<Torus>(1.5, 1.0)};
 }
 
 Point3 random_point_near(const Surface& s, Random& random) {
@@ -127,8 +127,8 @@ TEST_CASE("charts: points on F, area elements and cell reaches") {
         const double reach = s->cell_reach(cell).radius();
         const Point3 centre = s->point(chart, cell.u_mid(), cell.v_mid());
         for (int t = 0; t < 20; ++t) {
-          const Point3 q = s->point(chart, random.uniform(cell.u0, cell.u1),
-                                    random.uniform(cell.v0, cell.v1));
+          const Point3 q =
+              s->point(chart, random.uniform(cell.u0, cell.u1), random.uniform(cell.v0, cell.v1));
           REQUIRE(distance(q, centre) <= reach);
         }
         // Corners are where the bound is tightest.
@@ -162,9 +162,22 @@ TEST_CASE("is_inside agrees with the implicit function and the geometry") {
   CHECK(torus.is_inside({3.0, 0, 0.5}));
   CHECK_FALSE(torus.is_inside({0, 0, 0}));
   DoubleTorus dt;
-  CHECK(dt.is_inside({1.0, 0, 0}));       // big tube
+  CHECK(dt.is_inside({1.0, 0, 0}));         // big tube
   CHECK(dt.is_inside({1.7 + 0.45, 0, 0}));  // small tube, far side
-  CHECK_FALSE(dt.is_inside({0, 0, 0}));   // big hole
-  CHECK_FALSE(dt.is_inside({1.7, 0, 0}));  // small hole
+  CHECK_FALSE(dt.is_inside({0, 0, 0}));     // big hole
+  CHECK_FALSE(dt.is_inside({1.7, 0, 0}));   // small hole
   CHECK(dt.bounding_box().hi.x > 1.7 + 0.45 + 0.18);
+}
+
+TEST_CASE("sizes outside the supported range are rejected, not mishandled") {
+  CHECK_THROWS_AS(Sphere(1e300), InvalidInput);
+  CHECK_THROWS_AS(Sphere(1e-300), InvalidInput);
+  CHECK_THROWS_AS(Ellipsoid(1e100, 1, 1), InvalidInput);
+  CHECK_THROWS_AS(Torus(1e95, 1.0), InvalidInput);
+  DoubleTorusParameters p;
+  p.small_centre_x = 1e300;
+  CHECK_THROWS_AS(DoubleTorus(p), InvalidInput);
+  // The extremes of the range still work.
+  CHECK(sample_uniform(Sphere(1e90), 10, 1).size() == 10);
+  CHECK(sample_uniform(Sphere(1e-90), 10, 1).size() == 10);
 }

@@ -1,8 +1,6 @@
 // Uniform-by-area sampling of surfaces and triangle meshes: on the surface, deterministic
 // for a seed, and with region frequencies matching area fractions (binomial tolerances of
 // five standard deviations).
-#include "rstruct/sampling/uniform_sampling.hpp"
-
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
@@ -13,6 +11,7 @@
 #include "rstruct/sampling/implicit_mesher.hpp"
 #include "rstruct/sampling/sphere.hpp"
 #include "rstruct/sampling/torus.hpp"
+#include "rstruct/sampling/uniform_sampling.hpp"
 
 using namespace rstruct;
 using namespace rstruct::sampling;
@@ -48,7 +47,8 @@ TEST_CASE("torus: the outer half (cos phi > 0) gets its area fraction") {
     REQUIRE(std::fabs(t.value(p)) <= 1e-14);
     if (std::hypot(p.x, p.y) > R) ++outer;
   }
-  CHECK(fraction_matches(outer, pts.size(), (std::numbers::pi * R + 2 * a) / (2 * std::numbers::pi * R)));
+  CHECK(fraction_matches(outer, pts.size(),
+                         (std::numbers::pi * R + 2 * a) / (2 * std::numbers::pi * R)));
 }
 
 TEST_CASE("ellipsoid: a band gets its area fraction") {

@@ -73,8 +73,8 @@ struct Certificate {
 /// Certifies (or refutes) that `samples` is an r-sample of `surface` (see the file comment).
 /// \throws InvalidInput if the surface has no parametrization or unknown lfs, r is not in
 /// (0, 1], or a sample is not finite.
-Certificate certify_r_sample(const Surface& surface, const std::vector<Point3>& samples,
-                             double r, const CertifyOptions& options = {});
+Certificate certify_r_sample(const Surface& surface, const std::vector<Point3>& samples, double r,
+                             const CertifyOptions& options = {});
 
 struct RSampleOptions {
   std::uint64_t seed = 1;

@@ -50,8 +50,9 @@ struct RigidTransform {
 /// `base` moved by `transform`. The base surface is shared, not copied.
 class TransformedSurface final : public Surface {
  public:
-  /// \throws InvalidInput if base is null, the transform has a non-finite entry or Q is not
-  /// a rotation to within 1e-12.
+  /// \throws InvalidInput if base is null, the transform has a non-finite entry, a
+  /// translation component beyond 1e15 (coordinates there keep less than one bit below
+  /// 0.1), or Q is not a rotation to within 1e-12.
   TransformedSurface(std::shared_ptr<const Surface> base, RigidTransform transform);
 
   const Surface& base() const { return *base_; }

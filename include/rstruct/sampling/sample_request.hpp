@@ -20,11 +20,10 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "rstruct/geometry/triangle_mesh.hpp"
 #include "rstruct/sampling/noise.hpp"
@@ -54,19 +53,19 @@ struct SampleRequest {
   std::optional<double> r;       ///< certified lfs-adaptive r-sample (exclusive with n)
   std::optional<std::size_t> n;  ///< n points uniform by area
   std::uint64_t seed = 1;
-  double noise = 0.0;            ///< σ of the Gaussian noise (see noise_scale)
+  double noise = 0.0;  ///< σ of the Gaussian noise (see noise_scale)
   NoiseScale noise_scale = NoiseScale::kAbsolute;
   bool rotate = false;
   Vec3 translate{};
-  RSampleOptions r_options;      ///< its seed is replaced by one derived from `seed`
+  RSampleOptions r_options;  ///< its seed is replaced by one derived from `seed`
 };
 
 struct SampleOutput {
   std::shared_ptr<const Surface> surface;  ///< the placed surface (null for a mesh)
   RigidTransform transform;
-  std::vector<Point3> points;              ///< final points (with noise, if any)
-  std::vector<double> lfs;                 ///< lfs at the noiseless points; empty if unknown
-  std::optional<RSample> r_sample;         ///< generation details and certificate (r only)
+  std::vector<Point3> points;       ///< final points (with noise, if any)
+  std::vector<double> lfs;          ///< lfs at the noiseless points; empty if unknown
+  std::optional<RSample> r_sample;  ///< generation details and certificate (r only)
   double seconds = 0;
 };
 

@@ -24,6 +24,15 @@ namespace rstruct::sampling {
 /// point is within 2⁻⁴⁶·|P|max of the exact one (a generous bound). cell_reach() adds it.
 constexpr double kPointRounding = 0x1.0p-46;
 
+/// Supported range of lengths (radii, semi-axes): squares and products of three stay
+/// finite and normal, so areas and area elements never overflow or underflow.
+constexpr double kMinLength = 1e-90;
+constexpr double kMaxLength = 1e90;
+/// Whether `length` is finite and within [kMinLength, kMaxLength].
+inline bool is_supported_length(double length) {
+  return length >= kMinLength && length <= kMaxLength;
+}
+
 /// An axis-parallel rectangle [u0, u1] × [v0, v1] of parameter space in chart `chart`.
 struct ParamCell {
   int chart = 0;
