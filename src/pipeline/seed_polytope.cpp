@@ -44,6 +44,10 @@ void map_samples(std::span<const Point3> samples, const RegularTriangulation3& r
                  const std::vector<std::uint32_t>& output_vertex_of_ball, SeedPolytope& out) {
   out.sample_vertex.assign(samples.size(), kNone);
   triangulation::CellId hint = triangulation::kNoCell;
+  // visited[w] == stamp marks w as seen in the current sample's search (no O(n) reset).
+  std::vector<std::uint32_t> visited(rt.number_of_points(), 0);
+  std::uint32_t stamp = 0;
+  std::vector<VertexId> ring, next;
   for (std::size_t s = 0; s < samples.size(); ++s) {
     VertexId v = rt.nearest_power_vertex(samples[s], hint);
     hint = rt.incident_cell(v);
@@ -54,17 +58,17 @@ void map_samples(std::span<const Point3> samples, const RegularTriangulation3& r
     // Breadth-first rings around v until one holds output vertices; the least power
     // distance among them wins (a measurement on input data, documented above).
     ++out.remapped_samples;
-    std::vector<VertexId> ring{v};
-    std::vector<bool> seen(rt.number_of_points(), false);
-    seen[v] = true;
+    ++stamp;
+    ring.assign(1, v);
+    visited[v] = stamp;
     std::uint32_t best = kNone;
     while (best == kNone && !ring.empty()) {
-      std::vector<VertexId> next;
+      next.clear();
       double best_power = HUGE_VAL;
       for (VertexId u : ring) {
         for (VertexId w : rt.adjacent_vertices(u)) {
-          if (seen[w]) continue;
-          seen[w] = true;
+          if (visited[w] == stamp) continue;
+          visited[w] = stamp;
           next.push_back(w);
           if (output_vertex_of_ball[w] == kNone) continue;
           const double p = power_distance(samples[s], rt.weighted_point(w));
