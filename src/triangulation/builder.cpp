@@ -297,7 +297,7 @@ bool Builder::in_conflict(CellId c, VertexId p) {
 void Builder::insert(VertexId p) {
   const Point3& q = points_[p];
   const CellId c = t_.walk(q, t_.is_cell(last_) ? last_ : t_.any_cell(), rng_,
-                           t_.stats_.walk_steps);
+                           t_.stats_.walk_steps, t_.stats_.orient_calls);
   if (!in_conflict(c, p)) {
     raw_hidden_.push_back({p, c});
     last_ = c;
@@ -408,7 +408,10 @@ void Builder::link_star() {
     if (local_vertices_.size() == kLocal - 1) break;  // may have overflowed: start over
   }
   for (const VertexId v : local_vertices_) vertex_local_[v] = 0;
-  if (local_vertices_.size() == kLocal - 1) link_star_hashed();
+  if (local_vertices_.size() == kLocal - 1) {
+    ++t_.stats_.large_cavities;
+    link_star_hashed();
+  }
 }
 
 // Fallback for cavities with many boundary vertices: an open-addressing table keyed by the

@@ -123,7 +123,7 @@ CellId RegularTriangulation3::any_cell() const {
 }
 
 CellId RegularTriangulation3::walk(const Point3& q, CellId start, std::uint64_t& rng,
-                                   std::uint64_t& steps) const {
+                                   std::uint64_t& steps, std::uint64_t& orients) const {
   CellId c = start;
   CellId previous = kNoCell;
   // The stochastic walk terminates with probability 1 (Devillers, Pion & Teillaud); the
@@ -134,7 +134,9 @@ CellId RegularTriangulation3::walk(const Point3& q, CellId start, std::uint64_t&
     const int inf = infinite_index(c);
     if (inf >= 0) {
       const CellId inner = neighbor(c, inf);
-      if (previous == inner || orient_replaced(c, inf, q) > 0) return c;
+      if (previous == inner) return c;
+      ++orients;
+      if (orient_replaced(c, inf, q) > 0) return c;
       previous = c;
       c = inner;
       continue;
@@ -145,6 +147,7 @@ CellId RegularTriangulation3::walk(const Point3& q, CellId start, std::uint64_t&
       const int i = (r + t) & 3;
       const CellId next = neighbor(c, i);
       if (next == previous) continue;
+      ++orients;
       if (orient_replaced(c, i, q) < 0) {
         previous = c;
         c = next;
@@ -175,7 +178,8 @@ CellId RegularTriangulation3::locate(const Point3& q, CellId hint) const {
   RSTRUCT_ASSERT_MSG(!cells_.empty(), "locate in an empty triangulation");
   std::uint64_t rng = 0x2545F4914F6CDD1Dull;
   std::uint64_t steps = 0;
-  return walk(q, is_cell(hint) ? hint : any_cell(), rng, steps);
+  std::uint64_t orients = 0;
+  return walk(q, is_cell(hint) ? hint : any_cell(), rng, steps, orients);
 }
 
 void RegularTriangulation3::finalize(std::span<const HiddenPoint> raw_hidden) {
@@ -202,7 +206,7 @@ void RegularTriangulation3::finalize(std::span<const HiddenPoint> raw_hidden) {
   CellId start = any_cell();
   for (const HiddenPoint& h : raw_hidden) {
     const Point3& q = points_[h.point];
-    const CellId c = walk(q, is_cell(h.cell) ? h.cell : start, rng, steps);
+    const CellId c = walk(q, is_cell(h.cell) ? h.cell : start, rng, steps, steps);
     start = c;
     VertexId same = kInfiniteVertex;
     for (const VertexId v : cells_[c].v) {

@@ -177,3 +177,24 @@ TEST_CASE("the result does not depend on the insertion order") {
     RC_ASSERT(cell_set(RegularTriangulation3(q)) == mapped);
   });
 }
+
+TEST_CASE("a cavity with hundreds of boundary vertices (the star is linked by hashing)") {
+  // Points near a sphere, then its centre: every cell's circumsphere holds the centre, so
+  // the last insertion's cavity is the whole triangulation.
+  std::vector<Point3> p;
+  rstruct::test::Random r(99);
+  while (p.size() < 300) {
+    const Point3 q{r.uniform() * 2 - 1, r.uniform() * 2 - 1, r.uniform() * 2 - 1};
+    const double len = norm(q);
+    if (len > 0.1) p.push_back(q / len);
+  }
+  p.push_back({0, 0, 0});
+  TriangulationOptions sequential;
+  sequential.spatial_sort = false;
+  for (const auto& options : {sequential, TriangulationOptions{}}) {
+    const RegularTriangulation3 t(p, options);
+    CHECK(t.is_valid().message == "");
+    CHECK(t.number_of_vertices() == p.size());
+    if (!options.spatial_sort) CHECK(t.stats().large_cavities >= 1);
+  }
+}

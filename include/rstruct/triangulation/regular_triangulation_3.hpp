@@ -119,6 +119,7 @@ struct TriangulationStats {
   std::uint64_t conflict_cells = 0;      ///< cells destroyed by insertions (total)
   std::uint64_t orient_calls = 0;        ///< orient3d calls of the walk
   std::uint64_t power_test_calls = 0;    ///< insphere / power tests of the conflict search
+  std::uint64_t large_cavities = 0;      ///< cavities with more than 31 boundary vertices
 };
 
 /// The result of is_valid(): ok, or the first violated property in words.
@@ -313,7 +314,8 @@ class RegularTriangulation3 {
   int orient_replaced(CellId c, int i, const Point3& q) const;
   /// Remembering stochastic walk from `start` (a live cell) to a cell whose closure contains
   /// q; an infinite cell iff q is strictly outside the hull. `rng` is the caller's state.
-  CellId walk(const Point3& q, CellId start, std::uint64_t& rng, std::uint64_t& steps) const;
+  CellId walk(const Point3& q, CellId start, std::uint64_t& rng, std::uint64_t& steps,
+              std::uint64_t& orients) const;
   /// Some live cell, for walks without a usable hint.
   CellId any_cell() const;
   /// Rebuilds vertex_cell_, the counts and the hidden/duplicate reports from the cells and
