@@ -54,6 +54,13 @@ Instance Instance::from_csr(std::int32_t num_rows, std::span<const std::int64_t>
   if (num_cols > static_cast<std::size_t>(INT32_MAX)) {
     throw InvalidInput("set cover: too many columns");
   }
+  // All offsets first: a later decrease would otherwise let an earlier column read past
+  // the entries.
+  for (std::size_t j = 0; j < num_cols; ++j) {
+    if (col_start[j + 1] < col_start[j]) {
+      throw InvalidInput("set cover: column offsets decrease at column " + std::to_string(j));
+    }
+  }
   check_costs(costs, num_cols);
   Instance inst;
   inst.num_rows_ = num_rows;
@@ -61,9 +68,6 @@ Instance Instance::from_csr(std::int32_t num_rows, std::span<const std::int64_t>
   inst.col_start_.assign(1, 0);
   inst.col_rows_.reserve(col_rows.size());
   for (std::size_t j = 0; j < num_cols; ++j) {
-    if (col_start[j + 1] < col_start[j]) {
-      throw InvalidInput("set cover: column offsets decrease at column " + std::to_string(j));
-    }
     const auto first = inst.col_rows_.size();
     for (std::int64_t k = col_start[j]; k < col_start[j + 1]; ++k) {
       const std::int32_t r = col_rows[static_cast<std::size_t>(k)];

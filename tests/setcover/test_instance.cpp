@@ -55,7 +55,9 @@ TEST_CASE("bad instances are rejected with typed errors") {
   CHECK_THROWS_AS(Instance::from_columns(2, {{0}, {1}}, {1.0}), InvalidInput);
   const std::vector<std::int64_t> bad_start{0, 3, 2};
   const std::vector<std::int32_t> rows{0, 1};
-  CHECK_THROWS_AS(Instance::from_csr(2, bad_start, rows), InvalidInput);
+  CHECK_THROWS_AS(Instance::from_csr(2, bad_start, rows), InvalidInput);  // ASan found the overread
+  const std::vector<std::int64_t> short_start{0, 1};
+  CHECK_THROWS_AS(Instance::from_csr(2, short_start, rows), InvalidInput);
   CHECK_THROWS_WITH(Instance::from_columns(2, {{0}, {5}}), Catch::Contains("column 1") && Catch::Contains("row 5"));
 }
 
