@@ -20,6 +20,16 @@ std::atomic<std::uint64_t> g_exact{0};
 template <class N>
 using V3 = std::array<N, 3>;
 
+/// a − b of two input doubles (the filter turns exact differences into exact leaves).
+template <class N>
+N difference(double a, double b) {
+  return N(a) - N(b);
+}
+template <>
+FilteredNumber difference<FilteredNumber>(double a, double b) {
+  return FilteredNumber::difference(a, b);
+}
+
 template <class N>
 N dot(const V3<N>& x, const V3<N>& y) {
   N s = x[0] * y[0];
@@ -53,14 +63,15 @@ struct OrthoSystem {
   std::array<N, 3> b;      // b_i = |u_i|² − w_i + w₀
   V3<N> origin;            // c₀
   N w0;
+  WeightedPoint first;
 
   explicit OrthoSystem(std::span<const WeightedPoint> sigma)
-      : k(static_cast<int>(sigma.size()) - 1) {
+      : k(static_cast<int>(sigma.size()) - 1), first(sigma[0]) {
     for (int j = 0; j < 3; ++j) origin[j] = N(sigma[0].c[j]);
     w0 = N(sigma[0].w);
     for (int i = 0; i < k; ++i) {
-      for (int j = 0; j < 3; ++j) u[i][j] = N(sigma[i + 1].c[j]) - origin[j];
-      b[i] = dot(u[i], u[i]) - N(sigma[i + 1].w) + w0;
+      for (int j = 0; j < 3; ++j) u[i][j] = difference<N>(sigma[i + 1].c[j], sigma[0].c[j]);
+      b[i] = dot(u[i], u[i]) - difference<N>(sigma[i + 1].w, sigma[0].w);
     }
   }
 
@@ -94,8 +105,8 @@ struct OrthoSystem {
   /// Of the sign of π_p(z_σ) − π_σ(z_σ): D b_p − g_pᵀ adj(G) b (k = 1, 2).
   N attachment(const WeightedPoint& p) const {
     V3<N> up;
-    for (int j = 0; j < 3; ++j) up[j] = N(p.c[j]) - origin[j];
-    const N bp = dot(up, up) - N(p.w) + w0;
+    for (int j = 0; j < 3; ++j) up[j] = difference<N>(p.c[j], first.c[j]);
+    const N bp = dot(up, up) - difference<N>(p.w, first.w);
     if (k == 1) return dot(u[0], u[0]) * bp - dot(u[0], up) * b[0];
     const V3<N> a = combine(b[0], u[1], b[1], u[0]);
     const V3<N> n = cross(u[0], u[1]);
