@@ -9,11 +9,15 @@
 // Prints one line per measurement: complex, labels, simplices, step, median seconds over
 // the runs, and a checksum (Betti numbers / counts).
 //
+//  - torus surface balls: the dual complex path of the seed pipeline (85,100 samples and
+//    up), with the regular triangulation timed for reference.
+//
 // Usage: bench_complex [max_simplices (default 3000000)] [runs (default 3)]
 
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -23,9 +27,12 @@
 #include <vector>
 
 #include "rstruct/complex/collapse.hpp"
+#include "rstruct/complex/dual_complex.hpp"
+#include "rstruct/complex/orthosphere_predicates.hpp"
 #include "rstruct/complex/homology.hpp"
 #include "rstruct/complex/manifold.hpp"
 #include "rstruct/complex/simplicial_complex.hpp"
+#include "rstruct/triangulation/regular_triangulation_3.hpp"
 
 using namespace rstruct::complex;
 
@@ -142,6 +149,55 @@ void bench_complex(const char* name, const char* labels, const std::vector<Simpl
              " left");
 }
 
+/// The seed-polytope path of the pipeline on torus surface balls: jittered nu × nv grid on
+/// the torus (1, 0.4), balls B(s, ρ · 0.4) (lfs ≡ 0.4), regular triangulation (reference
+/// only, another module), then this module: K, β(K), depth-first collapse, manifold test.
+void bench_surface_balls(int nu, int nv, double rho, int runs) {
+  const double pi = std::acos(-1.0);
+  std::mt19937 engine(5);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  std::vector<rstruct::Point3> centres;
+  std::vector<double> weights;
+  for (int i = 0; i < nu; ++i) {
+    for (int j = 0; j < nv; ++j) {
+      const double u = 2 * pi * (i + jitter(engine)) / nu;
+      const double v = 2 * pi * (j + jitter(engine)) / nv;
+      const double ring = 1 + 0.4 * std::cos(v);
+      centres.push_back({ring * std::cos(u), ring * std::sin(u), 0.4 * std::sin(v)});
+      weights.push_back(rho * 0.4 * rho * 0.4);
+    }
+  }
+  const std::size_t n = centres.size();
+  const auto t0 = std::chrono::steady_clock::now();
+  const rstruct::triangulation::RegularTriangulation3 r(centres, weights);
+  const double t_tri = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  report("torus-balls", "grid", n, "regular triangulation", t_tri,
+         std::to_string(r.number_of_finite_cells()) + " cells (other module)");
+  DualComplex dual;
+  reset_orthosphere_predicate_counters();
+  const double t_dual = median_seconds(runs, [&] { dual = dual_complex(r); });
+  const auto counters = orthosphere_predicate_counters();
+  report("torus-balls", "grid", n, "dual complex K", t_dual,
+         std::to_string(dual.triangulation.total_size()) + " simplices of R, exact stage " +
+             std::to_string(counters.exact) + "/" +
+             std::to_string(counters.exact + counters.filtered));
+  SimplicialComplex k;
+  const double t_sub = median_seconds(runs, [&] { k = dual.complex(); });
+  report("torus-balls", "grid", n, "K as a complex", t_sub,
+         std::to_string(k.total_size()) + " simplices");
+  BettiNumbers b;
+  const double t_betti = median_seconds(runs, [&] { b = betti_numbers(k); });
+  report("torus-balls", "grid", n, "betti(K)", t_betti, betti_text(b));
+  CollapseResult c;
+  const double t_col =
+      median_seconds(runs, [&] { c = collapse_free_faces(k, CollapseOrder::depth_first); });
+  report("torus-balls", "grid", n, "collapse (depth-first)", t_col,
+         std::to_string(c.complex.size(2)) + " triangles left");
+  bool manifold = false;
+  const double t_man = median_seconds(runs, [&] { manifold = is_closed_2_manifold(c.complex); });
+  report("torus-balls", "grid", n, "closed 2-manifold?", t_man, manifold ? "yes" : "no");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -161,6 +217,11 @@ int main(int argc, char** argv) {
     bench_complex("solid-torus", "grid", tets, runs, n <= 10);
     shuffle_labels(tets, 2);
     bench_complex("solid-torus", "shuffled", tets, runs, n <= 10);
+  }
+  for (const int scale : {1, 2, 4}) {
+    const int nu = 460 * scale, nv = 185 * scale;  // 85,100 samples at scale 1
+    if (static_cast<std::size_t>(nu) * nv * 30 > max_simplices * 4) break;
+    bench_surface_balls(nu, nv, 0.4, runs);
   }
   return 0;
 }

@@ -51,6 +51,18 @@ struct FilteredNumber {
   FilteredNumber& operator-=(const FilteredNumber& o) { return *this = *this - o; }
   FilteredNumber& operator*=(const FilteredNumber& o) { return *this = *this * o; }
 
+  /// a − b for two input doubles. If the rounded difference is exact (checked with
+  /// Knuth's TwoSum: the rounding error of a + (−b) is computed exactly), it is a new exact
+  /// leaf (depth 0, magnitude |a − b|), which is common for nearby points (Sterbenz).
+  static FilteredNumber difference(double a, double b) {
+    const double s = a - b;
+    const double nb = -b;
+    const double bb = s - a;
+    const double err = (a - (s - bb)) + (nb - bb);
+    if (err == 0 && std::isfinite(s)) return FilteredNumber(s);
+    return {s, std::fabs(a) + std::fabs(b), 1, false};
+  }
+
   /// −1, 0 or +1 if the sign of the exact value is certified, else 2.
   int certified_sign() const {
     if (unsafe || !std::isfinite(v) || !std::isfinite(m)) return 2;

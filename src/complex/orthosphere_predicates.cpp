@@ -17,82 +17,100 @@ using detail::FilteredNumber;
 std::atomic<std::uint64_t> g_filtered{0};
 std::atomic<std::uint64_t> g_exact{0};
 
-/// The quantities of a simplex relative to its first point (see the header), in number
-/// type N (FilteredNumber for the filter, mpq_class for the exact stage).
+template <class N>
+using V3 = std::array<N, 3>;
+
+/// a − b of two input doubles (the filter turns exact differences into exact leaves).
+template <class N>
+N difference(double a, double b) {
+  return N(a) - N(b);
+}
+template <>
+FilteredNumber difference<FilteredNumber>(double a, double b) {
+  return FilteredNumber::difference(a, b);
+}
+
+template <class N>
+N dot(const V3<N>& x, const V3<N>& y) {
+  N s = x[0] * y[0];
+  s += x[1] * y[1];
+  s += x[2] * y[2];
+  return s;
+}
+
+template <class N>
+V3<N> cross(const V3<N>& x, const V3<N>& y) {
+  return {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+}
+
+template <class N>
+V3<N> combine(const N& a, const V3<N>& x, const N& b, const V3<N>& y) {  // a x − b y
+  return {a * x[0] - b * y[0], a * x[1] - b * y[1], a * x[2] - b * y[2]};
+}
+
+/// The quantities of a simplex relative to its first point c₀ (see the header), in number
+/// type N (FilteredNumber for the filter, mpq_class for the exact stage). The Gram forms
+/// of the header are evaluated through equivalent, better conditioned vector forms:
+///   k = 1: bᵀ adj(G) b = b₁², D = |u₁|²;
+///   k = 2: bᵀ adj(G) b = |a|², a = b₁u₂ − b₂u₁; D = |n|², n = u₁ × u₂;
+///          adj(G) b = (a × n) in the basis sense: g_pᵀ adj(G) b = ⟨u_p, a × n⟩;
+///   k = 3: bᵀ adj(G) b = |v|², v = b₁ u₂×u₃ + b₂ u₃×u₁ + b₃ u₁×u₂; D = det(u₁,u₂,u₃)².
+/// (Cramer's rule for z − c₀ in aff(σ); the k = 2 identity is the vector triple product.)
 template <class N>
 struct OrthoSystem {
   int k = 0;
-  std::array<std::array<N, 3>, 3> u;    // u_i = c_i − c₀
-  std::array<N, 3> b;                   // b_i = |u_i|² − w_i + w₀
-  std::array<std::array<N, 3>, 3> adj;  // adjugate of the Gram matrix
-  N det;                                // Gram determinant D
-  std::array<N, 3> origin;              // c₀
+  std::array<V3<N>, 3> u;  // u_i = c_i − c₀
+  std::array<N, 3> b;      // b_i = |u_i|² − w_i + w₀
+  V3<N> origin;            // c₀
   N w0;
+  WeightedPoint first;
 
   explicit OrthoSystem(std::span<const WeightedPoint> sigma)
-      : k(static_cast<int>(sigma.size()) - 1) {
+      : k(static_cast<int>(sigma.size()) - 1), first(sigma[0]) {
     for (int j = 0; j < 3; ++j) origin[j] = N(sigma[0].c[j]);
     w0 = N(sigma[0].w);
     for (int i = 0; i < k; ++i) {
-      for (int j = 0; j < 3; ++j) u[i][j] = N(sigma[i + 1].c[j]) - origin[j];
-      b[i] = dot(u[i], u[i]) - N(sigma[i + 1].w) + w0;
-    }
-    std::array<std::array<N, 3>, 3> g;
-    for (int i = 0; i < k; ++i) {
-      for (int j = i; j < k; ++j) g[i][j] = g[j][i] = dot(u[i], u[j]);
-    }
-    compute_adjugate(g);
-  }
-
-  static N dot(const std::array<N, 3>& x, const std::array<N, 3>& y) {
-    N s = x[0] * y[0];
-    s += x[1] * y[1];
-    s += x[2] * y[2];
-    return s;
-  }
-
-  void compute_adjugate(const std::array<std::array<N, 3>, 3>& g) {
-    if (k == 1) {
-      adj[0][0] = N(1.0);
-      det = g[0][0];
-    } else if (k == 2) {
-      adj[0][0] = g[1][1];
-      adj[1][1] = g[0][0];
-      adj[0][1] = adj[1][0] = N(0.0) - g[0][1];
-      det = g[0][0] * g[1][1] - g[0][1] * g[0][1];
-    } else {
-      adj[0][0] = g[1][1] * g[2][2] - g[1][2] * g[1][2];
-      adj[1][1] = g[0][0] * g[2][2] - g[0][2] * g[0][2];
-      adj[2][2] = g[0][0] * g[1][1] - g[0][1] * g[0][1];
-      adj[0][1] = adj[1][0] = g[0][2] * g[1][2] - g[0][1] * g[2][2];
-      adj[0][2] = adj[2][0] = g[0][1] * g[1][2] - g[0][2] * g[1][1];
-      adj[1][2] = adj[2][1] = g[0][1] * g[0][2] - g[0][0] * g[1][2];
-      det = g[0][0] * adj[0][0] + g[0][1] * adj[0][1] + g[0][2] * adj[0][2];
+      for (int j = 0; j < 3; ++j) u[i][j] = difference<N>(sigma[i + 1].c[j], sigma[0].c[j]);
+      b[i] = dot(u[i], u[i]) - difference<N>(sigma[i + 1].w, sigma[0].w);
     }
   }
 
-  /// xᵀ adj(G) y.
-  N form(const std::array<N, 3>& x, const std::array<N, 3>& y) const {
-    N s = x[0] * adj[0][0] * y[0];
-    for (int i = 0; i < k; ++i) {
-      for (int j = 0; j < k; ++j) {
-        if (i != 0 || j != 0) s += x[i] * adj[i][j] * y[j];
-      }
+  /// Zero iff the points are affinely dependent (|u₁|², |n|² or the determinant).
+  N degeneracy() const {
+    if (k == 1) return dot(u[0], u[0]);
+    if (k == 2) {
+      const V3<N> n = cross(u[0], u[1]);
+      return dot(n, n);
     }
-    return s;
+    return dot(u[0], cross(u[1], u[2]));
   }
 
-  /// bᵀ adj(G) b − 4 D w₀, of the sign of π_σ(z_σ).
-  N power() const { return form(b, b) - N(4.0) * det * w0; }
+  /// Of the sign of π_σ(z_σ): bᵀ adj(G) b − 4 D w₀.
+  N power() const {
+    if (k == 1) return b[0] * b[0] - N(4.0) * dot(u[0], u[0]) * w0;
+    if (k == 2) {
+      const V3<N> a = combine(b[0], u[1], b[1], u[0]);
+      const V3<N> n = cross(u[0], u[1]);
+      return dot(a, a) - N(4.0) * dot(n, n) * w0;
+    }
+    const V3<N> c0 = cross(u[1], u[2]);
+    const V3<N> c1 = cross(u[2], u[0]);
+    const V3<N> c2 = cross(u[0], u[1]);
+    V3<N> v;
+    for (int j = 0; j < 3; ++j) v[j] = b[0] * c0[j] + b[1] * c1[j] + b[2] * c2[j];
+    const N det = dot(u[0], c0);
+    return dot(v, v) - N(4.0) * det * det * w0;
+  }
 
-  /// D b_p − g_pᵀ adj(G) b, of the sign of π_p(z_σ) − π_σ(z_σ).
+  /// Of the sign of π_p(z_σ) − π_σ(z_σ): D b_p − g_pᵀ adj(G) b (k = 1, 2).
   N attachment(const WeightedPoint& p) const {
-    std::array<N, 3> up;
-    for (int j = 0; j < 3; ++j) up[j] = N(p.c[j]) - origin[j];
-    const N bp = dot(up, up) - N(p.w) + w0;
-    std::array<N, 3> gp;
-    for (int i = 0; i < k; ++i) gp[i] = dot(u[i], up);
-    return det * bp - form(gp, b);
+    V3<N> up;
+    for (int j = 0; j < 3; ++j) up[j] = difference<N>(p.c[j], first.c[j]);
+    const N bp = dot(up, up) - difference<N>(p.w, first.w);
+    if (k == 1) return dot(u[0], u[0]) * bp - dot(u[0], up) * b[0];
+    const V3<N> a = combine(b[0], u[1], b[1], u[0]);
+    const V3<N> n = cross(u[0], u[1]);
+    return dot(n, n) * bp - dot(up, cross(a, n));
   }
 };
 
@@ -105,8 +123,8 @@ void check_size(std::span<const WeightedPoint> sigma, std::size_t max) {
 
 Sign exact_sign(const mpq_class& x) { return static_cast<Sign>(sgn(x)); }
 
-void require_independent(const mpq_class& det) {
-  if (sgn(det) == 0) {
+void require_independent(const mpq_class& degeneracy) {
+  if (sgn(degeneracy) == 0) {
     throw InvalidInput("orthosphere predicate: the points of the simplex are affinely dependent");
   }
 }
@@ -117,7 +135,7 @@ Sign orthosphere_power_sign_exact(std::span<const WeightedPoint> sigma) {
   check_size(sigma, 4);
   if (sigma.size() == 1) return -sign_of(sigma[0].w);
   const OrthoSystem<mpq_class> s(sigma);
-  require_independent(s.det);
+  require_independent(s.degeneracy());
   return exact_sign(s.power());
 }
 
@@ -130,7 +148,7 @@ Sign orthosphere_attachment_sign_exact(std::span<const WeightedPoint> sigma,
     return exact_sign(s.b[0]);
   }
   const OrthoSystem<mpq_class> s(sigma);
-  require_independent(s.det);
+  require_independent(s.degeneracy());
   return exact_sign(s.attachment(p));
 }
 
@@ -138,7 +156,8 @@ Sign orthosphere_power_sign(std::span<const WeightedPoint> sigma) {
   check_size(sigma, 4);
   if (sigma.size() == 1) return -sign_of(sigma[0].w);
   const OrthoSystem<FilteredNumber> s(sigma);
-  if (s.det.certified_sign() == 1) {
+  const int nondegenerate = s.degeneracy().certified_sign();
+  if (nondegenerate == 1 || nondegenerate == -1) {
     const int sign = s.power().certified_sign();
     if (sign != 2) {
       g_filtered.fetch_add(1, std::memory_order_relaxed);
@@ -160,7 +179,7 @@ Sign orthosphere_attachment_sign(std::span<const WeightedPoint> sigma, const Wei
     }
   } else {
     const OrthoSystem<FilteredNumber> s(sigma);
-    if (s.det.certified_sign() == 1) {
+    if (s.degeneracy().certified_sign() == 1) {
       const int sign = s.attachment(p).certified_sign();
       if (sign != 2) {
         g_filtered.fetch_add(1, std::memory_order_relaxed);

@@ -168,7 +168,7 @@ DualComplex dual_complex_via_triangulation(BallSet& set) {
 
 TEST_CASE("dual complex on the regular triangulation agrees with brute force") {
   rc::prop("general position", [] {
-    const int n = *rc::gen::inRange(4, 9);
+    const int n = *rc::gen::inRange(3, 7);
     BallSet set;
     for (int i = 0; i < n; ++i) {
       const auto coord = [] { return *rc::gen::inRange(-1000000, 1000000) / 400000.0; };
