@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <sstream>
 
 #include "rstruct/complex/collapse.hpp"
@@ -12,6 +11,7 @@
 #include "rstruct/core/report.hpp"
 #include "rstruct/poles/ball_parameters.hpp"
 #include "rstruct/poles/ball_sets.hpp"
+#include "rstruct/predicates/predicates.hpp"
 #include "rstruct/triangulation/regular_triangulation_3.hpp"
 
 namespace rstruct::pipeline {
@@ -38,49 +38,54 @@ void check_options(const SeedOptions& options, SeedPolytope& out) {
   out.warnings = check.warnings;
 }
 
-/// Output vertex of every sample: power cell of the kept balls (exact), then the nearest
-/// ring of output vertices if that ball's vertex did not survive the collapse.
+/// Output vertex of every sample: the kept ball whose power cell contains it (exact). If
+/// that ball's vertex did not survive the collapse, the power cell among the output
+/// vertices' balls decides instead (a second regular triangulation, built only if needed).
 void map_samples(std::span<const Point3> samples, const RegularTriangulation3& rt,
                  const std::vector<std::uint32_t>& output_vertex_of_ball, SeedPolytope& out) {
   out.sample_vertex.assign(samples.size(), kNone);
+  std::vector<std::uint32_t> pending;
   triangulation::CellId hint = triangulation::kNoCell;
-  // visited[w] == stamp marks w as seen in the current sample's search (no O(n) reset).
-  std::vector<std::uint32_t> visited(rt.number_of_points(), 0);
-  std::uint32_t stamp = 0;
-  std::vector<VertexId> ring, next;
-  for (std::size_t s = 0; s < samples.size(); ++s) {
-    VertexId v = rt.nearest_power_vertex(samples[s], hint);
+  for (std::uint32_t s = 0; s < samples.size(); ++s) {
+    const VertexId v = rt.nearest_power_vertex(samples[s], hint);
     hint = rt.incident_cell(v);
     if (output_vertex_of_ball[v] != kNone) {
       out.sample_vertex[s] = output_vertex_of_ball[v];
-      continue;
+    } else {
+      pending.push_back(s);
     }
-    // Breadth-first rings around v until one holds output vertices; the least power
-    // distance among them wins (a measurement on input data, documented above).
-    ++out.remapped_samples;
-    ++stamp;
-    ring.assign(1, v);
-    visited[v] = stamp;
-    std::uint32_t best = kNone;
-    while (best == kNone && !ring.empty()) {
-      next.clear();
-      double best_power = HUGE_VAL;
-      for (VertexId u : ring) {
-        for (VertexId w : rt.adjacent_vertices(u)) {
-          if (visited[w] == stamp) continue;
-          visited[w] = stamp;
-          next.push_back(w);
-          if (output_vertex_of_ball[w] == kNone) continue;
-          const double p = power_distance(samples[s], rt.weighted_point(w));
-          if (p < best_power) {
-            best_power = p;
-            best = output_vertex_of_ball[w];
-          }
+  }
+  out.remapped_samples = pending.size();
+  if (pending.empty() || out.vertex_sample.empty()) return;
+  // Balls of the output vertices, in output order (ball k ↔ output vertex k).
+  std::vector<Point3> centres;
+  std::vector<double> weights;
+  for (std::uint32_t ball = 0; ball < output_vertex_of_ball.size(); ++ball) {
+    if (output_vertex_of_ball[ball] == kNone) continue;
+    centres.push_back(rt.point(ball));
+    weights.push_back(rt.weight(ball));
+  }
+  if (centres.size() < 4) {
+    // Too few for a 3D triangulation: compare powers directly (exactly).
+    for (std::uint32_t s : pending) {
+      std::uint32_t best = 0;
+      for (std::uint32_t k = 1; k < centres.size(); ++k) {
+        if (predicates::compare_power_distance(samples[s], {centres[k], weights[k]},
+                                               {centres[best], weights[best]}) ==
+            Sign::negative) {
+          best = k;
         }
       }
-      ring.swap(next);
+      out.sample_vertex[s] = best;
     }
-    out.sample_vertex[s] = best;  // stays kNone only if the output is empty
+    return;
+  }
+  const RegularTriangulation3 output_rt(std::move(centres), std::move(weights));
+  hint = triangulation::kNoCell;
+  for (std::uint32_t s : pending) {
+    const VertexId k = output_rt.nearest_power_vertex(samples[s], hint);
+    hint = output_rt.incident_cell(k);
+    out.sample_vertex[s] = k;
   }
 }
 

@@ -15,8 +15,8 @@
 ///     2-manifold — measured on the complex, never assumed.
 ///  6. Sample map: each sample goes to the kept ball whose power cell contains it; if that
 ///     ball is not a vertex of the output (its vertex was collapsed away), to the output
-///     vertex of least power distance among the nearest ring of output vertices around it
-///     in the regular triangulation (counted in `remapped_samples`).
+///     vertex whose power cell among the output vertices' balls contains it (counted in
+///     `remapped_samples`). Both decisions are exact power comparisons.
 ///
 /// With smaller ρ and ρ̃ the same pipeline is the paper's scalable reconstruction.
 
