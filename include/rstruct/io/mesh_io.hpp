@@ -52,7 +52,8 @@ struct ReadOptions {
 /// - PLY: element `vertex` with float or double x, y, z; its other scalar properties
 ///   become vertex_properties (as doubles, in header order); element `face` with a list
 ///   property `vertex_indices` or `vertex_index` of integers, polygons fan-triangulated;
-///   every other element and property is skipped.
+///   every other element and property is skipped. ASCII bodies hold one element instance
+///   per line (blank lines are skipped).
 /// - OFF: optional `OFF`/`COFF`/`NOFF`/`STOFF`... keyword, `#` comments, counts line
 ///   (`nv nf [ne]`), vertices (extra columns such as colours ignored), faces (`n i1 .. in`,
 ///   trailing colour ignored).

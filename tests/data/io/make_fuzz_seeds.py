@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Writes the seed corpora of the reader fuzz targets, fuzz/corpus/fuzz_read_<fmt>/: small
 valid files in the variants each reader accepts, plus this format's malformed corpus files
-(tests/data/io/malformed/). Crash inputs found by fuzzing are added by hand as
-fuzz/corpus/<target>/regression-<name> and are kept when this script re-runs."""
+(tests/data/io/malformed/). Inputs kept from fuzzing runs (found-<sha1>, merged with
+libFuzzer -merge=1) and crash inputs (regression-<name>) are kept when this script re-runs."""
 import os
 import shutil
 import struct
@@ -73,7 +73,7 @@ if __name__ == "__main__":
         out = os.path.join(ROOT, "fuzz", "corpus", "fuzz_read_" + fmt)
         os.makedirs(out, exist_ok=True)
         for f in os.listdir(out):
-            if not f.startswith("regression-"):
+            if not f.startswith(("regression-", "found-")):
                 os.remove(os.path.join(out, f))
         for name, content in seeds.items():
             with open(os.path.join(out, name), "wb") as f:
