@@ -107,7 +107,7 @@ class DemoCommand : public Command {
  private:
   std::string out_dir_ = "demo-output";
   std::size_t n_ = 85237;
-  std::string levels_ = "0.24:0,0.5:0.03,0.56:0.1";
+  std::string levels_ = "0.5:0,0.56:0.15,0.56:0.2";
   double cover_time_ = 1.0;
   std::uint64_t seed_ = 1;
 };

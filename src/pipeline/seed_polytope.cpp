@@ -13,6 +13,7 @@
 #include "rstruct/poles/ball_sets.hpp"
 #include "rstruct/predicates/predicates.hpp"
 #include "rstruct/triangulation/regular_triangulation_3.hpp"
+#include "rstruct/triangulation/spatial_sort.hpp"
 
 namespace rstruct::pipeline {
 
@@ -46,7 +47,9 @@ void map_samples(std::span<const Point3> samples, const RegularTriangulation3& r
   out.sample_vertex.assign(samples.size(), kNone);
   std::vector<std::uint32_t> pending;
   triangulation::CellId hint = triangulation::kNoCell;
-  for (std::uint32_t s = 0; s < samples.size(); ++s) {
+  // Queries along a Hilbert curve keep each walk from the previous answer short.
+  const std::vector<std::uint32_t> order = triangulation::hilbert_order(samples);
+  for (std::uint32_t s : order) {
     const VertexId v = rt.nearest_power_vertex(samples[s], hint);
     hint = rt.incident_cell(v);
     if (output_vertex_of_ball[v] != kNone) {
