@@ -12,7 +12,7 @@
 /// (*attached*: some vertex p with σ ∪ {p} in R has π_p(z_σ) < π_σ(z_σ)) the minimum lies
 /// on the boundary of V_σ, whose pieces are the duals of σ's cofaces, so σ ∈ K iff one of
 /// its cofaces is. Every sign comes from the exact predicates of
-/// orthosphere_predicates.hpp; no epsilon, no perturbation (ties are decided as what they
+/// orthosphere_predicates.hpp; no tolerance, no perturbation (ties are decided as what they
 /// are: touching balls are connected).
 ///
 /// Facets of R are classified relative to K as exterior (not in K), singular (in K, no
