@@ -135,6 +135,12 @@ struct Row {
 int main(int argc, char** argv) {
   const std::size_t calls = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 200000;
   const int runs = argc > 2 ? std::atoi(argv[2]) : 7;
+  if (calls < 1000 || runs < 1) {
+    std::fprintf(stderr,
+                 "usage: bench_predicates [calls_per_run >= 1000 (default 200000)] "
+                 "[runs >= 1 (default 7)] [min]\n");
+    return 2;
+  }
   g_use_min = argc > 3 && std::string(argv[3]) == "min";
   std::mt19937_64 rng(12345);
   const Inputs rnd = random_inputs(calls, rng);

@@ -4,10 +4,11 @@
 // to weighted costs by comparing score / cost. The search keeps the current cost below the
 // best found, removing columns with the smallest weighted loss and adding, for a random
 // uncovered row, its column with the largest weighted gain; rows that stay uncovered gain
-// weight. Time stamps and configuration checking break cycles; the configuration is tracked
-// on rows (a column may be re-added once one of its rows changed between covered and
-// uncovered), which costs nothing extra per move on large geometric instances. Unicost
-// instances use RWLS's order (drop, then repair); weighted ones add first and then drop.
+// weight. Time stamps and configuration checking break cycles (RWLS's rule: a removed
+// column may be re-added once a column sharing one of its rows changed state); after
+// 50,000 iterations without improvement the search restarts from the best cover with unit
+// weights and a new random stream. Unicost instances use RWLS's order (drop, then repair);
+// weighted ones add first and then drop.
 
 #include <cstdint>
 #include <vector>
