@@ -1,0 +1,101 @@
+#pragma once
+/// \file
+/// The medial axis of a finite union of balls U (Amenta & Kolluri, "The medial axis of a
+/// union of balls", CGTA 20 (2001); DESIGN.md §6; paper §3 "Medial axis approximation").
+///
+/// Algorithm:
+///  1. Regular triangulation of the balls plus four far points of weight 0 (so any number of
+///     balls, coplanar centres included, spans R³), and its dual complex K at α = 0.
+///  2. The boundary vertices V of ∂U, tagged with their ball ids (boundary_vertices.hpp).
+///  3. Delaunay triangulation of V plus four far points. The medial axis inside the Voronoi
+///     face F(a, b) of a Delaunay edge ab of V is F(a, b) ∩ T_a, T_a = conv(a, c_i, c_j, c_k)
+///     for the balls i, j, k of a: for x ∈ T_a the Voronoi ball B(x, |x − a|) lies in
+///     B_i ∪ B_j ∪ B_k (its power is a convex combination of |p − a|² and the balls' powers),
+///     and a nearest boundary point a forces x into T_a. The faces of T_a through two
+///     centres cut F(a, b) along the axes c_i c_j of the circles ("cut at ball centres").
+///  4. Plus what V does not produce: the segment c_i c_j of every singular edge of K and the
+///     centre of every singular vertex.
+/// The medial axis is homotopy equivalent to U, hence to K (checked by the tests).
+///
+/// Elements are identified combinatorially, never by comparing coordinates: a Voronoi
+/// vertex whose four Delaunay sites share a ball is that ball's centre; a point where a
+/// Voronoi edge leaves T_a is named by the Delaunay triangle and the centres of the cutting
+/// plane; two cutting planes through the same centre meet at that centre.
+///
+/// Decisions: the regular triangulation, K and the facet classes use the exact predicates;
+/// which points of V a facet gives and every side-of-plane test of the clipping use exact
+/// orient3d on double points. Constructions (documented approximations): the points of V,
+/// the circumcentres and the clipping intersections are rounded doubles; the Delaunay
+/// triangulation of V is the exact one of those rounded points (perturbed where they are
+/// cospherical).
+///
+/// Known limitation: four or more spheres through one boundary point (e.g. equal balls on a
+/// grid) give nearly coincident points of V from different facets; the output keeps them
+/// apart and may then differ from U's homotopy type by small cycles.
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rstruct/complex/homology.hpp"
+#include "rstruct/complex/simplicial_complex.hpp"
+#include "rstruct/geometry/vec3.hpp"
+
+namespace rstruct::medial {
+
+/// Where a medial-axis vertex comes from.
+enum class MedialVertexKind : std::uint8_t {
+  voronoi_vertex,  ///< circumcentre of a Delaunay tetrahedron of V (inside U)
+  ball_centre,     ///< the centre of an input ball
+  cut,             ///< where a Voronoi edge or face of V is cut by a face of some T_a
+};
+
+/// A polyhedral complex with a radius per vertex.
+struct MedialAxis {
+  std::vector<Point3> vertices;
+  std::vector<double> radius;          ///< distance to ∂U (ball radius at a centre)
+  std::vector<MedialVertexKind> kind;
+  std::vector<std::uint32_t> source;   ///< ball id for ball_centre, else unspecified
+  /// Edges not on any face (segments of singular edges of K, degenerate cut faces).
+  std::vector<std::array<std::uint32_t, 2>> edges;
+  /// Convex polygons (vertex cycles, ≥ 3 distinct vertices).
+  std::vector<std::vector<std::uint32_t>> faces;
+  /// Vertices on no edge and no face (centres of isolated balls).
+  std::vector<std::uint32_t> isolated_vertices;
+
+  /// Every edge: polygon sides and the free edges, each once, (i < j), sorted.
+  std::vector<std::array<std::uint32_t, 2>> all_edges() const;
+  /// The polygons fan-triangulated from their first vertex.
+  std::vector<std::array<std::uint32_t, 3>> triangles() const;
+  /// The simplicial complex of vertices, all edges and the triangles (for homology).
+  complex::SimplicialComplex simplicial_complex() const;
+  /// Index bounds, no repeated vertex in a polygon or an edge, finite coordinates and radii.
+  bool is_valid(std::string* problem = nullptr) const;
+};
+
+/// Counts of a run.
+struct MedialAxisStats {
+  std::size_t balls = 0;
+  std::size_t hidden_balls = 0;           ///< not vertices of the regular triangulation
+  std::array<std::size_t, 4> k_counts{};  ///< simplices of K by dimension (far points out)
+  complex::BettiNumbers betti_k;          ///< of K, equal to those of U
+  std::size_t boundary_vertices = 0;      ///< |V|
+  std::size_t delaunay_cells = 0;         ///< finite cells of Del(V ∪ far points)
+  std::size_t singular_edges = 0;
+  std::size_t singular_vertices = 0;
+  double triangulation_seconds = 0;       ///< regular triangulation + K
+  double voronoi_seconds = 0;             ///< V, its Delaunay triangulation and the clipping
+};
+
+/// The medial axis of the union of `balls`.
+/// \throws InvalidInput if a centre or radius is not finite or a radius is not positive.
+/// An empty input gives an empty axis.
+MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* stats = nullptr);
+
+/// Betti numbers of the dual complex K of the balls (without the far points): the homotopy
+/// type the medial axis must have.
+complex::BettiNumbers union_betti_numbers(std::span<const Ball> balls);
+
+}  // namespace rstruct::medial

@@ -1,0 +1,538 @@
+#include "rstruct/medial/medial_axis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "rstruct/complex/dual_complex.hpp"
+#include "rstruct/core/assert.hpp"
+#include "rstruct/core/error.hpp"
+#include "rstruct/core/stopwatch.hpp"
+#include "rstruct/medial/boundary_vertices.hpp"
+#include "rstruct/predicates/predicates.hpp"
+#include "rstruct/triangulation/regular_triangulation_3.hpp"
+#include "medial/union_triangulation.hpp"
+
+namespace rstruct::medial {
+
+namespace {
+
+using triangulation::CellId;
+using triangulation::RegularTriangulation3;
+
+constexpr std::uint32_t kNone = 0xffffffffu;
+
+// ---- keys ----------------------------------------------------------------------------
+
+enum KeyKind : std::uint32_t { kTet = 0, kCentre = 1, kCut = 2, kOther = 3 };
+
+struct Key {
+  std::array<std::uint32_t, 7> v{kNone, kNone, kNone, kNone, kNone, kNone, kNone};
+  friend bool operator==(const Key&, const Key&) = default;
+};
+
+struct KeyHash {
+  std::size_t operator()(const Key& k) const {
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for (std::uint32_t x : k.v) {
+      h ^= x + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+    }
+    return static_cast<std::size_t>(h);
+  }
+};
+
+Key tet_key(CellId c) { return Key{{kTet, c, kNone, kNone, kNone, kNone, kNone}}; }
+Key centre_key(std::uint32_t m) { return Key{{kCentre, m, kNone, kNone, kNone, kNone, kNone}}; }
+
+/// A set of up to three ball ids, increasing, padded with kNone.
+struct IdSet {
+  std::array<std::uint32_t, 3> id{kNone, kNone, kNone};
+  int size = 0;
+  bool contains(std::uint32_t x) const {
+    for (int i = 0; i < size; ++i) {
+      if (id[i] == x) return true;
+    }
+    return false;
+  }
+  void insert(std::uint32_t x) {
+    if (contains(x) || size == 3) return;
+    int i = size++;
+    for (; i > 0 && id[i - 1] > x; --i) id[i] = id[i - 1];
+    id[i] = x;
+  }
+};
+
+IdSet intersect(const IdSet& a, const IdSet& b) {
+  IdSet r;
+  for (int i = 0; i < a.size; ++i) {
+    if (b.contains(a.id[i])) r.insert(a.id[i]);
+  }
+  return r;
+}
+
+IdSet tag_set(const BoundaryVertex& v) {
+  IdSet s;
+  for (auto b : v.balls) s.insert(b);
+  return s;
+}
+
+// ---- clipping --------------------------------------------------------------------------
+
+struct PolyVertex {
+  Key key;
+  Point3 p;
+};
+
+/// What a polygon side lies on: a Voronoi edge (dual to the Delaunay triangle a, b, x) or
+/// a face of T_a (the centres among its corners).
+struct SideOrigin {
+  bool voronoi_edge = true;
+  std::uint32_t third = kNone;  ///< x, for a Voronoi edge
+  IdSet centres;                ///< for a cut side
+};
+
+struct Plane {
+  std::array<Point3, 3> corner;
+  IdSet centres;
+  Sign inside = Sign::zero;  ///< orient3d(corners, opposite corner of T_a)
+  Vec3 normal;               ///< double, for the intersection parameter only
+};
+
+class Clipper {
+ public:
+  Clipper(std::span<const Ball> balls, std::span<const BoundaryVertex> v)
+      : balls_(balls), v_(v) {}
+
+  /// Clips the polygon of the Voronoi face F(a, b) by the faces of a's normal cone that
+  /// contain an axis c_i c_j lying in F(a, b), i.e. for the pairs {i, j} of balls shared by
+  /// a and b: the half-space of the plane (a, c_i, c_j) containing c_k, k a's third ball.
+  void clip(std::uint32_t a, std::uint32_t b, std::vector<PolyVertex>& poly,
+            std::vector<SideOrigin>& sides) {
+    const BoundaryVertex& va = v_[a];
+    const IdSet ta = tag_set(va);
+    const IdSet tab = intersect(ta, tag_set(v_[b]));
+    if (tab.size < 2) return;
+    for (int skip = 0; skip < 3 && !poly.empty(); ++skip) {
+      const std::uint32_t k = va.balls[skip];
+      if (tab.size == 2 && tab.contains(k)) continue;  // {i, j} must be the shared pair
+      Plane plane;
+      plane.corner[0] = va.point;
+      int m = 1;
+      for (int q = 0; q < 3; ++q) {
+        if (q == skip) continue;
+        plane.corner[m++] = balls_[va.balls[q]].c;
+        plane.centres.insert(va.balls[q]);
+      }
+      plane.inside = predicates::orient3d(plane.corner[0], plane.corner[1], plane.corner[2],
+                                          balls_[k].c);
+      if (plane.inside == Sign::zero) continue;  // a flat cone: tangent spheres
+      plane.normal = cross(plane.corner[1] - plane.corner[0], plane.corner[2] - plane.corner[0]);
+      clip_by(plane, a, b, ta, tab, poly, sides);
+    }
+  }
+
+ private:
+  int side(const Plane& plane, const Point3& x) const {
+    return to_int(predicates::orient3d(plane.corner[0], plane.corner[1], plane.corner[2], x) *
+                  plane.inside);
+  }
+
+  Key cut_key(const SideOrigin& o, const Plane& plane, std::uint32_t a, std::uint32_t b,
+              const IdSet& tab) {
+    if (o.voronoi_edge) {
+      // The Voronoi edge of triangle (a, b, x) passes through every centre its three
+      // points share; if the cutting face also contains that centre, they meet there.
+      if (o.third < v_.size()) {  // not a far point
+        const IdSet shared = intersect(intersect(tab, tag_set(v_[o.third])), plane.centres);
+        if (shared.size > 0) return centre_key(shared.id[0]);
+      }
+      std::array<std::uint32_t, 3> t{a, b, o.third};
+      std::sort(t.begin(), t.end());
+      return Key{{kCut, t[0], t[1], t[2], plane.centres.id[0], plane.centres.id[1],
+                  plane.centres.id[2]}};
+    }
+    // Two faces of T_a through a common centre c_m meet F(a, b) at c_m when c_m ∈ F(a, b).
+    const IdSet shared = intersect(intersect(o.centres, plane.centres), tab);
+    if (shared.size > 0) return centre_key(shared.id[0]);
+    return Key{{kOther, other_counter_++, kNone, kNone, kNone, kNone, kNone}};
+  }
+
+  void clip_by(const Plane& plane, std::uint32_t a, std::uint32_t b, const IdSet& /*ta*/,
+               const IdSet& tab, std::vector<PolyVertex>& poly, std::vector<SideOrigin>& sides) {
+    const std::size_t n = poly.size();
+    std::vector<int> s(n);
+    bool any_out = false;
+    bool any_in = false;
+    for (std::size_t i = 0; i < n; ++i) {
+      s[i] = side(plane, poly[i].p);
+      any_out |= s[i] < 0;
+      any_in |= s[i] > 0;
+    }
+    if (!any_out) return;
+    if (!any_in) {
+      // Only vertices on the plane may remain: a degenerate (flat) piece.
+      std::vector<PolyVertex> keep;
+      std::vector<SideOrigin> keep_sides;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (s[i] == 0) {
+          keep.push_back(poly[i]);
+          SideOrigin o;
+          o.voronoi_edge = false;
+          o.centres = plane.centres;
+          keep_sides.push_back(o);
+        }
+      }
+      poly.swap(keep);
+      sides.swap(keep_sides);
+      return;
+    }
+    std::vector<PolyVertex> out;
+    std::vector<SideOrigin> out_sides;
+    SideOrigin cut_side;
+    cut_side.voronoi_edge = false;
+    cut_side.centres = plane.centres;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t j = (i + 1) % n;
+      if (s[i] >= 0) {
+        out.push_back(poly[i]);
+        // The side leaving poly[i] is kept (possibly shortened) unless it runs from the
+        // plane to the outside: then the cut side follows poly[i].
+        out_sides.push_back((s[i] > 0 || s[j] >= 0) ? sides[i] : cut_side);
+      }
+      if ((s[i] > 0 && s[j] < 0) || (s[i] < 0 && s[j] > 0)) {
+        const Key key = cut_key(sides[i], plane, a, b, tab);
+        Point3 p;
+        if (key.v[0] == kCentre) {
+          p = balls_[key.v[1]].c;
+        } else {
+          const double di = dot(plane.normal, poly[i].p - plane.corner[0]);
+          const double dj = dot(plane.normal, poly[j].p - plane.corner[0]);
+          const double t = di / (di - dj);
+          p = poly[i].p + t * (poly[j].p - poly[i].p);
+        }
+        out.push_back({key, p});
+        // Entering the inside: the new vertex starts the rest of the old side; leaving it:
+        // the new vertex starts the cut side.
+        out_sides.push_back(s[i] < 0 ? sides[i] : cut_side);
+      }
+    }
+    poly.swap(out);
+    sides.swap(out_sides);
+  }
+
+  std::span<const Ball> balls_;
+  std::span<const BoundaryVertex> v_;
+  std::uint32_t other_counter_ = 0;
+};
+
+// ---- assembly ---------------------------------------------------------------------------
+
+class Builder {
+ public:
+  explicit Builder(MedialAxis& axis) : axis_(axis) {}
+
+  std::uint32_t vertex(const Key& key, const Point3& p, double radius, MedialVertexKind kind,
+                       std::uint32_t source) {
+    auto [it, inserted] = index_.try_emplace(key, static_cast<std::uint32_t>(axis_.vertices.size()));
+    if (inserted) {
+      axis_.vertices.push_back(p);
+      axis_.radius.push_back(radius);
+      axis_.kind.push_back(kind);
+      axis_.source.push_back(source);
+    }
+    return it->second;
+  }
+
+ private:
+  MedialAxis& axis_;
+  std::unordered_map<Key, std::uint32_t, KeyHash> index_;
+};
+
+/// x lies in the normal cone of the boundary vertex a: on the side of every plane
+/// (a, c_i, c_j) that holds c_k. Exact orient3d on the double points.
+bool in_normal_cone(const Point3& x, const BoundaryVertex& a, std::span<const Ball> balls) {
+  for (int k = 0; k < 3; ++k) {
+    const Point3& ci = balls[a.balls[(k + 1) % 3]].c;
+    const Point3& cj = balls[a.balls[(k + 2) % 3]].c;
+    const Sign inside = predicates::orient3d(a.point, ci, cj, balls[a.balls[k]].c);
+    const Sign s = predicates::orient3d(a.point, ci, cj, x);
+    if (to_int(s * inside) < 0) return false;
+  }
+  return true;
+}
+
+/// The Voronoi vertex x of a Delaunay cell of V is medial iff its Voronoi ball lies in U:
+/// x must lie in U (exact power tests against the balls) and in the normal cone of each of
+/// its four sites (otherwise the ball leaves U beside that site).
+bool is_inner_voronoi_vertex(const Point3& x, const std::array<std::uint32_t, 4>& sites,
+                             std::span<const BoundaryVertex> v, std::span<const Ball> balls,
+                             const RegularTriangulation3& rt, CellId& hint) {
+  if (!is_finite(x)) return false;
+  const auto nearest = rt.nearest_power_vertex(x, hint);
+  hint = rt.incident_cell(nearest);
+  if (predicates::power_sign(x, rt.weighted_point(nearest)) == Sign::positive) return false;
+  for (auto s : sites) {
+    if (!in_normal_cone(x, v[s], balls)) return false;
+  }
+  return true;
+}
+
+MedialVertexKind kind_of(const Key& key) {
+  switch (key.v[0]) {
+    case kTet: return MedialVertexKind::voronoi_vertex;
+    case kCentre: return MedialVertexKind::ball_centre;
+    default: return MedialVertexKind::cut;
+  }
+}
+
+}  // namespace
+
+// ---- MedialAxis ---------------------------------------------------------------------------
+
+std::vector<std::array<std::uint32_t, 2>> MedialAxis::all_edges() const {
+  std::vector<std::array<std::uint32_t, 2>> out;
+  auto add = [&](std::uint32_t i, std::uint32_t j) {
+    if (i == j) return;
+    out.push_back({std::min(i, j), std::max(i, j)});
+  };
+  for (const auto& e : edges) add(e[0], e[1]);
+  for (const auto& f : faces) {
+    for (std::size_t i = 0; i < f.size(); ++i) add(f[i], f[(i + 1) % f.size()]);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::vector<std::array<std::uint32_t, 3>> MedialAxis::triangles() const {
+  std::vector<std::array<std::uint32_t, 3>> out;
+  for (const auto& f : faces) {
+    for (std::size_t i = 1; i + 1 < f.size(); ++i) out.push_back({f[0], f[i], f[i + 1]});
+  }
+  return out;
+}
+
+complex::SimplicialComplex MedialAxis::simplicial_complex() const {
+  complex::SimplexLists lists;
+  for (std::uint32_t v = 0; v < vertices.size(); ++v) lists.vertices.push_back(v);
+  for (const auto& e : all_edges()) lists.edges.push_back({e[0], e[1]});
+  for (const auto& t : triangles()) lists.triangles.push_back({t[0], t[1], t[2]});
+  return complex::SimplicialComplex::closure_of(lists);
+}
+
+bool MedialAxis::is_valid(std::string* problem) const {
+  auto fail = [&](const std::string& what) {
+    if (problem) *problem = what;
+    return false;
+  };
+  const std::size_t n = vertices.size();
+  if (radius.size() != n || kind.size() != n || source.size() != n) {
+    return fail("per-vertex arrays differ in size");
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_finite(vertices[i]) || !std::isfinite(radius[i]) || radius[i] < 0) {
+      return fail("vertex " + std::to_string(i) + " has a non-finite position or radius");
+    }
+  }
+  for (const auto& e : edges) {
+    if (e[0] >= n || e[1] >= n || e[0] == e[1]) return fail("bad edge");
+  }
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    std::vector<std::uint32_t> ids = faces[f];
+    if (ids.size() < 3) return fail("face " + std::to_string(f) + " has fewer than 3 vertices");
+    std::sort(ids.begin(), ids.end());
+    if (ids.back() >= n) return fail("face " + std::to_string(f) + " names a missing vertex");
+    if (std::adjacent_find(ids.begin(), ids.end()) != ids.end()) {
+      return fail("face " + std::to_string(f) + " repeats a vertex");
+    }
+  }
+  for (auto v : isolated_vertices) {
+    if (v >= n) return fail("bad isolated vertex");
+  }
+  return true;
+}
+
+// ---- the algorithm ------------------------------------------------------------------------
+
+complex::BettiNumbers union_betti_numbers(std::span<const Ball> balls) {
+  check_balls(balls);
+  if (balls.empty()) return {};
+  const RegularTriangulation3 rt = ball_triangulation(balls);
+  const complex::DualComplex k = complex::dual_complex(rt);
+  return complex::betti_numbers(ball_complex(k, balls.size()));
+}
+
+MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* stats) {
+  check_balls(balls);
+  MedialAxis axis;
+  MedialAxisStats local;
+  MedialAxisStats& st = stats ? *stats : local;
+  st = MedialAxisStats{};
+  st.balls = balls.size();
+  if (balls.empty()) return axis;
+  const auto n = static_cast<std::uint32_t>(balls.size());
+
+  Stopwatch clock;
+  const RegularTriangulation3 rt = ball_triangulation(balls);
+  const complex::DualComplex k = complex::dual_complex(rt);
+  const complex::SimplicialComplex kc = ball_complex(k, n);
+  for (int d = 0; d < 4; ++d) st.k_counts[d] = kc.size(d);
+  st.betti_k = complex::betti_numbers(kc);
+  for (std::uint32_t i = 0; i < n; ++i) st.hidden_balls += rt.is_vertex(i) ? 0 : 1;
+  st.triangulation_seconds = clock.seconds();
+  clock.reset();
+
+  Builder builder(axis);
+  auto centre_vertex = [&](std::uint32_t m) {
+    return builder.vertex(centre_key(m), balls[m].c, balls[m].r, MedialVertexKind::ball_centre, m);
+  };
+
+  // Singular edges and vertices of K: the pieces V does not see.
+  {
+    std::vector<bool> edge_has_coface(kc.size(1), false);
+    std::vector<bool> vertex_has_edge(kc.size(0), false);
+    for (complex::SimplexIndex t = 0; t < kc.size(2); ++t) {
+      for (auto e : kc.triangle_faces(t)) edge_has_coface[e] = true;
+    }
+    for (complex::SimplexIndex e = 0; e < kc.size(1); ++e) {
+      for (auto v : kc.edge_faces(e)) vertex_has_edge[v] = true;
+      if (!edge_has_coface[e]) {
+        const auto& ids = kc.edges()[e];
+        axis.edges.push_back({centre_vertex(ids[0]), centre_vertex(ids[1])});
+        ++st.singular_edges;
+      }
+    }
+    for (complex::SimplexIndex v = 0; v < kc.size(0); ++v) {
+      if (!vertex_has_edge[v]) {
+        centre_vertex(kc.vertices()[v]);
+        ++st.singular_vertices;
+      }
+    }
+  }
+
+  const std::vector<BoundaryVertex> bv = boundary_vertices(balls, rt, k);
+  st.boundary_vertices = bv.size();
+  if (!bv.empty()) {
+    const auto nv = static_cast<std::uint32_t>(bv.size());
+    std::vector<Point3> sites;
+    sites.reserve(nv + 4);
+    for (const BoundaryVertex& v : bv) sites.push_back(v.point);
+    for (const Point3& p : far_points(balls)) sites.push_back(p);
+    const RegularTriangulation3 del(std::move(sites));
+    st.delaunay_cells = del.number_of_finite_cells();
+
+    // Voronoi vertex of every finite cell: the centre its sites share, or the circumcentre.
+    std::vector<PolyVertex> cell_vertex(del.cell_capacity());
+    std::vector<double> cell_radius(del.cell_capacity(), 0.0);
+    std::vector<char> inner(del.cell_capacity(), 0);
+    CellId hint = triangulation::kNoCell;
+    del.for_each_finite_cell([&](CellId c) {
+      const auto vs = del.vertices(c);
+      IdSet shared;
+      bool has_far = false;
+      for (int q = 0; q < 4; ++q) {
+        if (vs[q] >= nv) {
+          has_far = true;
+        } else {
+          shared = q == 0 ? tag_set(bv[vs[q]]) : intersect(shared, tag_set(bv[vs[q]]));
+        }
+      }
+      if (!has_far && shared.size > 0) {
+        // Four points of one sphere: the Voronoi vertex is its centre, the ball itself.
+        cell_vertex[c] = {centre_key(shared.id[0]), balls[shared.id[0]].c};
+        cell_radius[c] = balls[shared.id[0]].r;
+        inner[c] = 1;
+      } else {
+        cell_vertex[c] = {tet_key(c), del.circumcenter(c)};
+        cell_radius[c] = std::sqrt(del.squared_circumradius(c));
+        if (!has_far) {
+          inner[c] = is_inner_voronoi_vertex(cell_vertex[c].p, vs, bv, balls, rt, hint) ? 1 : 0;
+        }
+      }
+    });
+
+    Clipper clipper(balls, bv);
+    std::unordered_set<std::uint64_t> seen;
+    std::vector<PolyVertex> poly;
+    std::vector<SideOrigin> sides;
+    del.for_each_finite_cell([&](CellId c) {
+      const auto vs = del.vertices(c);
+      for (int i = 0; i < 4; ++i) {
+        for (int j = i + 1; j < 4; ++j) {
+          std::uint32_t a = vs[i], b = vs[j];
+          if (a >= nv || b >= nv) continue;
+          if (a > b) std::swap(a, b);
+          if (!seen.insert((std::uint64_t{a} << 32) | b).second) continue;
+          const std::vector<CellId> ring = del.cells_around_edge({c, i, j});
+          poly.clear();
+          sides.clear();
+          bool finite = true;
+          for (std::size_t r = 0; r < ring.size(); ++r) {
+            const CellId t = ring[r];
+            const CellId u = ring[(r + 1) % ring.size()];
+            if (del.is_infinite(t)) {
+              finite = false;
+              break;
+            }
+            poly.push_back(cell_vertex[t]);
+            SideOrigin o;
+            for (auto x : del.vertices(t)) {
+              if (x != a && x != b && del.index(u, x) >= 0) o.third = x;
+            }
+            RSTRUCT_ASSERT(o.third != kNone);
+            sides.push_back(o);
+          }
+          if (!finite) continue;
+          clipper.clip(a, b, poly, sides);
+          bool keep = !poly.empty();
+          for (const PolyVertex& pv : poly) {
+            if (pv.key.v[0] == kTet && !inner[pv.key.v[1]]) keep = false;
+          }
+          if (!keep) continue;
+          std::vector<std::uint32_t> ids;
+          for (const PolyVertex& pv : poly) {
+            double radius = distance(pv.p, bv[a].point);
+            std::uint32_t source = kNone;
+            if (pv.key.v[0] == kCentre) {
+              radius = balls[pv.key.v[1]].r;
+              source = pv.key.v[1];
+            }
+            const std::uint32_t id = builder.vertex(pv.key, pv.p, radius, kind_of(pv.key), source);
+            if (ids.empty() || ids.back() != id) ids.push_back(id);
+          }
+          while (ids.size() > 1 && ids.front() == ids.back()) ids.pop_back();
+          std::vector<std::uint32_t> sorted = ids;
+          std::sort(sorted.begin(), sorted.end());
+          const bool distinct = std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+          if (ids.size() >= 3 && distinct) {
+            axis.faces.push_back(std::move(ids));
+          } else if (ids.size() >= 2) {
+            for (std::size_t q = 0; q + 1 < ids.size(); ++q) {
+              if (ids[q] != ids[q + 1]) axis.edges.push_back({ids[q], ids[q + 1]});
+            }
+          }
+        }
+      }
+    });
+  }
+
+  // Vertices on no edge or face.
+  {
+    std::vector<bool> used(axis.vertices.size(), false);
+    for (const auto& e : axis.edges) used[e[0]] = used[e[1]] = true;
+    for (const auto& f : axis.faces) {
+      for (auto v : f) used[v] = true;
+    }
+    for (std::uint32_t v = 0; v < axis.vertices.size(); ++v) {
+      if (!used[v]) axis.isolated_vertices.push_back(v);
+    }
+  }
+  st.voronoi_seconds = clock.seconds();
+  RSTRUCT_DEBUG_ASSERT(axis.is_valid());
+  return axis;
+}
+
+}  // namespace rstruct::medial
