@@ -7,6 +7,8 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include <gmpxx.h>
+
 #include "rstruct/complex/dual_complex.hpp"
 #include "rstruct/core/assert.hpp"
 #include "rstruct/core/error.hpp"
@@ -288,6 +290,31 @@ MedialVertexKind kind_of(const Key& key) {
   }
 }
 
+/// Balls inside another ball (|c_i − c_j| ≤ r_j − r_i, decided exactly with rationals):
+/// their spheres carry no boundary point, so they are removed before the axis is built
+/// (of two equal balls the one with the larger id). Only pairs joined by an edge of K can
+/// nest, so only those are tested.
+std::vector<bool> nested_balls(std::span<const Ball> balls, const complex::SimplicialComplex& kc) {
+  std::vector<bool> removed(balls.size(), false);
+  for (const auto& e : kc.edges()) {
+    for (int side = 0; side < 2; ++side) {
+      const std::uint32_t i = e[side], j = e[1 - side];  // is ball i inside ball j?
+      const Ball& bi = balls[i];
+      const Ball& bj = balls[j];
+      const mpq_class dr = mpq_class(bj.r) - mpq_class(bi.r);
+      if (sgn(dr) < 0) continue;
+      const mpq_class dx = mpq_class(bi.c.x) - mpq_class(bj.c.x);
+      const mpq_class dy = mpq_class(bi.c.y) - mpq_class(bj.c.y);
+      const mpq_class dz = mpq_class(bi.c.z) - mpq_class(bj.c.z);
+      if (dx * dx + dy * dy + dz * dz > dr * dr) continue;
+      // Equal balls nest both ways: keep the smaller id.
+      if (sgn(dr) == 0 && sgn(dx) == 0 && sgn(dy) == 0 && sgn(dz) == 0 && i < j) continue;
+      removed[i] = true;
+    }
+  }
+  return removed;
+}
+
 }  // namespace
 
 // ---- MedialAxis ---------------------------------------------------------------------------
@@ -385,6 +412,28 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
   st.triangulation_seconds = clock.seconds();
   clock.reset();
 
+  const std::vector<bool> nested = nested_balls(balls, kc);
+  if (std::find(nested.begin(), nested.end(), true) != nested.end()) {
+    std::vector<Ball> rest;
+    std::vector<std::uint32_t> id;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      if (!nested[i]) {
+        rest.push_back(balls[i]);
+        id.push_back(i);
+      }
+    }
+    MedialAxisStats sub;
+    MedialAxis reduced = medial_axis_of_union(rest, &sub);
+    for (std::size_t v = 0; v < reduced.source.size(); ++v) {
+      if (reduced.kind[v] == MedialVertexKind::ball_centre) reduced.source[v] = id[reduced.source[v]];
+    }
+    sub.balls = n;
+    sub.hidden_balls += n - rest.size();
+    sub.triangulation_seconds += st.triangulation_seconds;
+    st = sub;
+    return reduced;
+  }
+
   Builder builder(axis);
   auto centre_vertex = [&](std::uint32_t m) {
     return builder.vertex(centre_key(m), balls[m].c, balls[m].r, MedialVertexKind::ball_centre, m);
@@ -424,6 +473,32 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
     const RegularTriangulation3 del(std::move(sites));
     st.delaunay_cells = del.number_of_finite_cells();
 
+    // Cells whose common facet has five exactly cospherical points (unperturbed insphere
+    // on the rounded points) have the same Voronoi vertex: one vertex per such group.
+    std::vector<CellId> group(del.cell_capacity());
+    for (CellId c = 0; c < group.size(); ++c) group[c] = c;
+    auto find = [&](CellId c) {
+      while (group[c] != c) c = group[c] = group[group[c]];
+      return c;
+    };
+    del.for_each_finite_cell([&](CellId c) {
+      const auto vs = del.vertices(c);
+      for (auto x : vs) {
+        if (x >= nv) return;
+      }
+      for (int i = 0; i < 4; ++i) {
+        const CellId nb = del.neighbor(c, i);
+        if (nb < c || del.is_infinite(nb)) continue;
+        const auto apex = del.vertex(nb, del.mirror_index(c, i));
+        if (apex >= nv) continue;
+        if (predicates::insphere(del.point(vs[0]), del.point(vs[1]), del.point(vs[2]),
+                                 del.point(vs[3]), del.point(apex)) == Sign::zero) {
+          const CellId a = find(c), b = find(nb);
+          if (a != b) group[std::max(a, b)] = std::min(a, b);
+        }
+      }
+    });
+
     // Voronoi vertex of every finite cell: the centre its sites share, or the circumcentre.
     std::vector<PolyVertex> cell_vertex(del.cell_capacity());
     std::vector<double> cell_radius(del.cell_capacity(), 0.0);
@@ -451,6 +526,24 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
         if (!has_far) {
           inner[c] = is_inner_voronoi_vertex(cell_vertex[c].p, vs, bv, balls, rt, hint) ? 1 : 0;
         }
+      }
+    });
+
+    // One vertex per cospherical group, a shared centre first.
+    del.for_each_finite_cell([&](CellId c) {
+      const CellId r = find(c);
+      if (r != c && cell_vertex[c].key.v[0] == kCentre && cell_vertex[r].key.v[0] != kCentre) {
+        cell_vertex[r] = cell_vertex[c];
+        cell_radius[r] = cell_radius[c];
+        inner[r] = inner[c];
+      }
+    });
+    del.for_each_finite_cell([&](CellId c) {
+      const CellId r = find(c);
+      if (r != c) {
+        cell_vertex[c] = cell_vertex[r];
+        cell_radius[c] = cell_radius[r];
+        inner[c] = inner[r];
       }
     });
 

@@ -78,7 +78,7 @@ struct MedialAxis {
 /// Counts of a run.
 struct MedialAxisStats {
   std::size_t balls = 0;
-  std::size_t hidden_balls = 0;           ///< not vertices of the regular triangulation
+  std::size_t hidden_balls = 0;           ///< hidden (no power cell) or inside another ball
   std::array<std::size_t, 4> k_counts{};  ///< simplices of K by dimension (far points out)
   complex::BettiNumbers betti_k;          ///< of K, equal to those of U
   std::size_t boundary_vertices = 0;      ///< |V|

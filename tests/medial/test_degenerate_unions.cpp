@@ -1,0 +1,136 @@
+// Degenerate unions of balls: equal balls on a grid (cocircular centres), cospherical
+// centres, tangent balls, nested (hidden) balls. The medial axis must have the Betti
+// numbers of the dual complex K.
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "rstruct/medial/medial_axis.hpp"
+
+using namespace rstruct;
+using namespace rstruct::medial;
+
+namespace {
+
+complex::BettiNumbers axis_betti(const std::vector<Ball>& balls, MedialAxisStats& stats) {
+  const MedialAxis axis = medial_axis_of_union(balls, &stats);
+  std::string problem;
+  INFO(problem);
+  REQUIRE(axis.is_valid(&problem));
+  return complex::betti_numbers(axis.simplicial_complex());
+}
+
+std::vector<Ball> grid(int nx, int ny, int nz, double r) {
+  std::vector<Ball> balls;
+  for (int i = 0; i < nx; ++i) {
+    for (int j = 0; j < ny; ++j) {
+      for (int k = 0; k < nz; ++k) balls.push_back({{double(i), double(j), double(k)}, r});
+    }
+  }
+  return balls;
+}
+
+}  // namespace
+
+TEST_CASE("equal balls on a planar grid touching only along the grid lines", "[medial]") {
+  MedialAxisStats stats;
+  const auto b = axis_betti(grid(3, 3, 1, 0.6), stats);
+  CHECK(stats.betti_k == complex::BettiNumbers{{1, 4, 0, 0}});
+  CHECK(b == stats.betti_k);
+}
+
+TEST_CASE("equal balls on a grid, overlapping across face diagonals", "[medial][.degenerate]") {
+  // Four spheres through one point with coplanar centres (the centre of every grid square,
+  // lifted by 1/4): the known degenerate case of this implementation (DESIGN.md §6).
+  MedialAxisStats stats;
+  const auto b = axis_betti(grid(2, 2, 2, 0.75), stats);
+  CHECK(b == stats.betti_k);
+}
+
+TEST_CASE("equal balls on a grid, perturbed by 2^-45", "[medial][.degenerate]") {
+  // Too small a perturbation for the double constructions of V: still degenerate.
+  std::vector<Ball> balls = grid(3, 3, 2, 0.75);
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    balls[i].c.x += std::ldexp(static_cast<double>(i % 5) - 2.0, -45);
+    balls[i].c.y += std::ldexp(static_cast<double>(i % 3) - 1.0, -45);
+    balls[i].r += std::ldexp(static_cast<double>(i % 7), -45);
+  }
+  MedialAxisStats stats;
+  const auto b = axis_betti(balls, stats);
+  CHECK(b == stats.betti_k);
+}
+
+TEST_CASE("equal balls on a grid with cavities, perturbed by 2^-12", "[medial]") {
+  // r = 0.75 leaves the centre of every grid cube uncovered: four cavities.
+  std::vector<Ball> balls = grid(3, 3, 2, 0.75);
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    balls[i].c.x += std::ldexp(static_cast<double>(i % 5) - 2.0, -12);
+    balls[i].c.y += std::ldexp(static_cast<double>(i % 3) - 1.0, -12);
+    balls[i].r += std::ldexp(static_cast<double>(i % 7), -12);
+  }
+  MedialAxisStats stats;
+  const auto b = axis_betti(balls, stats);
+  CHECK(b == stats.betti_k);
+}
+
+TEST_CASE("cospherical centres: balls on the vertices of an octahedron", "[medial]") {
+  const std::vector<Ball> balls{{{2, 0, 0}, 2.1}, {{-2, 0, 0}, 2.1}, {{0, 2, 0}, 2.1},
+                                {{0, -2, 0}, 2.1}, {{0, 0, 2}, 2.1}, {{0, 0, -2}, 2.1}};
+  MedialAxisStats stats;
+  const auto b = axis_betti(balls, stats);
+  CHECK(stats.betti_k == complex::BettiNumbers{{1, 0, 0, 0}});
+  CHECK(b == stats.betti_k);
+}
+
+TEST_CASE("cocircular centres: a ring of six balls with equal radii", "[medial]") {
+  // Centres on the circle of radius 2 at multiples of 60°: neighbours at distance 2.
+  const double h = std::sqrt(3.0);
+  const std::vector<Ball> balls{{{2, 0, 0}, 1.2},  {{1, h, 0}, 1.2},   {{-1, h, 0}, 1.2},
+                                {{-2, 0, 0}, 1.2}, {{-1, -h, 0}, 1.2}, {{1, -h, 0}, 1.2}};
+  MedialAxisStats stats;
+  const auto b = axis_betti(balls, stats);
+  CHECK(stats.betti_k == complex::BettiNumbers{{1, 1, 0, 0}});
+  CHECK(b == stats.betti_k);
+}
+
+TEST_CASE("tangent balls are connected", "[medial]") {
+  const std::vector<Ball> balls{{{0, 0, 0}, 1}, {{2, 0, 0}, 1}, {{4, 0, 0}, 1}};
+  MedialAxisStats stats;
+  const MedialAxis axis = medial_axis_of_union(balls, &stats);
+  CHECK(stats.betti_k == complex::BettiNumbers{{1, 0, 0, 0}});
+  CHECK(axis.vertices.size() == 3);
+  CHECK(axis.all_edges().size() == 2);
+}
+
+TEST_CASE("nested balls: the hidden ball leaves no trace", "[medial]") {
+  const std::vector<Ball> balls{{{0, 0, 0}, 2}, {{0.5, 0, 0}, 1}, {{0, 0.25, 0}, 1.75}};
+  MedialAxisStats stats;
+  const MedialAxis axis = medial_axis_of_union(balls, &stats);
+  CHECK(stats.hidden_balls >= 1);  // hidden in the power diagram or nested
+  REQUIRE(axis.vertices.size() == 1);
+  CHECK(axis.vertices[0] == Point3{0, 0, 0});
+  CHECK(axis.radius[0] == 2);
+}
+
+TEST_CASE("internally tangent ball", "[medial]") {
+  const std::vector<Ball> balls{{{0, 0, 0}, 2}, {{1, 0, 0}, 1}};
+  MedialAxisStats stats;
+  const auto b = axis_betti(balls, stats);
+  CHECK(b == complex::BettiNumbers{{1, 0, 0, 0}});
+}
+
+TEST_CASE("metamorphic: permuting and scaling by a power of two keep the counts", "[medial]") {
+  std::vector<Ball> balls{{{0, 0, 0}, 1.3},   {{2, 0.1, 0}, 1.2}, {{1, 1.7, 0.2}, 1.1},
+                          {{1, 0.6, 1.5}, 1.0}, {{3, 1.5, 0.5}, 0.9}, {{-1, 1, 1}, 1.25}};
+  const MedialAxis a = medial_axis_of_union(balls);
+  std::vector<Ball> moved;
+  for (auto it = balls.rbegin(); it != balls.rend(); ++it) {
+    moved.push_back({{it->c.x * 4 + 1024, it->c.y * 4 - 512, it->c.z * 4}, it->r * 4});
+  }
+  const MedialAxis b = medial_axis_of_union(moved);
+  CHECK(a.vertices.size() == b.vertices.size());
+  CHECK(a.faces.size() == b.faces.size());
+  CHECK(a.all_edges().size() == b.all_edges().size());
+}
