@@ -67,8 +67,8 @@ StableMedialAxis stable_medial_axis(std::span<const Point3> samples,
 
   // Covering every sample: the covering matrix of all samples has Σ(covered samples)
   // entries, which grows like ε² and dominated the run time. We solve the set cover on every
-  // k-th sample only, then cover the samples the kept balls miss greedily (among all
-  // balls). A lower bound for a subset of the rows is a lower bound for all rows, so the
+  // k-th sample only, then cover the samples the kept balls miss by a second, small set
+  // cover (among all balls). A lower bound for a subset of the rows is a lower bound for all rows, so the
   // certified bound stays valid for the whole instance; the gap is against the final size.
   const double spacing = analysis.bbox_diagonal / std::sqrt(static_cast<double>(samples.size()));
   const double shell = 1.0 + out.eps / std::max(spacing, 1e-300);
@@ -103,31 +103,13 @@ StableMedialAxis stable_medial_axis(std::span<const Point3> samples,
     }
     out.repaired_samples = missed.size();
     if (!missed.empty()) {
-      // Greedy (Chvátal) on the missed samples over all balls.
-      const poles::CoveringSets sets = poles::covering_sets(polar.balls, missed, options.threads);
-      std::vector<bool> done(missed.size(), false);
-      std::size_t left = missed.size();
-      while (left > 0) {
-        std::size_t best = 0, best_gain = 0;
-        for (std::size_t j = 0; j < sets.column_count(); ++j) {
-          std::size_t gain = 0;
-          for (auto r : sets.column(j)) gain += done[r] ? 0 : 1;
-          if (gain > best_gain) {
-            best_gain = gain;
-            best = j;
-          }
-        }
-        if (best_gain == 0) {
-          throw ComputationFailed("medial: a sample is covered by no enlarged polar ball");
-        }
-        for (auto r : sets.column(best)) {
-          if (!done[r]) {
-            done[r] = true;
-            --left;
-          }
-        }
-        out.kept.push_back(static_cast<std::uint32_t>(best));
-      }
+      // A second, small set cover over all balls for the missed samples.
+      pipeline::PruneOptions repair_options = prune_options;
+      repair_options.time_limit = std::min(prune_options.time_limit, 0.1);
+      Report scratch_report;
+      const pipeline::PruneResult repair =
+          pipeline::prune_balls(polar.balls, missed, repair_options, &scratch_report);
+      out.kept.insert(out.kept.end(), repair.kept.begin(), repair.kept.end());
       std::sort(out.kept.begin(), out.kept.end());
       out.kept.erase(std::unique(out.kept.begin(), out.kept.end()), out.kept.end());
       out.prune.kept = out.kept;

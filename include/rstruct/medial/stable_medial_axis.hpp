@@ -31,8 +31,9 @@ struct StableMedialAxisOptions {
   double eps_rel = 0.005;
   /// Set-cover time limit in seconds; negative: automatic, proportional to the instance
   /// (0.05 s + 10 ms per thousand rows, at most 1.5 s). The set cover runs on every k-th
-  /// sample (k ≈ (1 + ε / spacing)²); the samples its cover misses are then covered
-  /// greedily, so the kept balls cover every sample and the certified bound stays valid.
+  /// sample (k ≈ (1 + ε / spacing)²); the samples its cover misses are then covered by a
+  /// second, small set cover, so the kept balls cover every sample and the certified bound
+  /// (of the subset, hence of the whole instance) stays valid.
   double cover_time_limit = -1.0;
   std::uint64_t seed = 1;
   unsigned threads = 0;  ///< 0: all cores
@@ -54,7 +55,7 @@ struct StableMedialAxis {
   pipeline::PruneResult prune;
   double cover_time_limit = 0;        ///< the limit used (last round)
   std::size_t cover_rows = 0;         ///< samples that were rows of the set cover
-  std::size_t repaired_samples = 0;   ///< samples the cover missed, covered greedily
+  std::size_t repaired_samples = 0;   ///< samples the cover missed, covered by a second cover
   MedialAxis axis;
   MedialAxisStats axis_stats;
   complex::BettiNumbers betti_axis;
