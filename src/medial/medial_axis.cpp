@@ -89,7 +89,7 @@ struct PolyVertex {
 };
 
 /// What a polygon side lies on: a Voronoi edge (dual to the Delaunay triangle a, b, x) or
-/// a face of T_a (the centres among its corners).
+/// a face of a normal cone (the centres among its corners).
 struct SideOrigin {
   bool voronoi_edge = true;
   std::uint32_t third = kNone;  ///< x, for a Voronoi edge
@@ -99,7 +99,7 @@ struct SideOrigin {
 struct Plane {
   std::array<Point3, 3> corner;
   IdSet centres;
-  Sign inside = Sign::zero;  ///< orient3d(corners, opposite corner of T_a)
+  Sign inside = Sign::zero;  ///< orient3d(corners, the third centre of the cone)
   Vec3 normal;               ///< double, for the intersection parameter only
 };
 
@@ -114,8 +114,7 @@ class Clipper {
   void clip(std::uint32_t a, std::uint32_t b, std::vector<PolyVertex>& poly,
             std::vector<SideOrigin>& sides) {
     const BoundaryVertex& va = v_[a];
-    const IdSet ta = tag_set(va);
-    const IdSet tab = intersect(ta, tag_set(v_[b]));
+    const IdSet tab = intersect(tag_set(va), tag_set(v_[b]));
     if (tab.size < 2) return;
     for (int skip = 0; skip < 3 && !poly.empty(); ++skip) {
       const std::uint32_t k = va.balls[skip];
@@ -132,7 +131,7 @@ class Clipper {
                                           balls_[k].c);
       if (plane.inside == Sign::zero) continue;  // a flat cone: tangent spheres
       plane.normal = cross(plane.corner[1] - plane.corner[0], plane.corner[2] - plane.corner[0]);
-      clip_by(plane, a, b, ta, tab, poly, sides);
+      clip_by(plane, a, b, tab, poly, sides);
     }
   }
 
@@ -156,14 +155,13 @@ class Clipper {
       return Key{{kCut, t[0], t[1], t[2], plane.centres.id[0], plane.centres.id[1],
                   plane.centres.id[2]}};
     }
-    // Two faces of T_a through a common centre c_m meet F(a, b) at c_m when c_m ∈ F(a, b).
+    // Two cone faces through a common centre c_m meet F(a, b) at c_m when c_m ∈ F(a, b).
     const IdSet shared = intersect(intersect(o.centres, plane.centres), tab);
     if (shared.size > 0) return centre_key(shared.id[0]);
     return Key{{kOther, other_counter_++, kNone, kNone, kNone, kNone, kNone}};
   }
 
-  void clip_by(const Plane& plane, std::uint32_t a, std::uint32_t b, const IdSet& /*ta*/,
-               const IdSet& tab, std::vector<PolyVertex>& poly, std::vector<SideOrigin>& sides) {
+  void clip_by(const Plane& plane, std::uint32_t a, std::uint32_t b, const IdSet& tab, std::vector<PolyVertex>& poly, std::vector<SideOrigin>& sides) {
     const std::size_t n = poly.size();
     std::vector<int> s(n);
     bool any_out = false;
