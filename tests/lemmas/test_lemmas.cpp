@@ -25,6 +25,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <optional>
 #include <vector>
@@ -36,7 +37,6 @@
 #include "rstruct/complex/dual_complex.hpp"
 #include "rstruct/core/stopwatch.hpp"
 #include "rstruct/complex/homology.hpp"
-#include "rstruct/pipeline/prune_balls.hpp"
 #include "rstruct/pipeline/seed_polytope.hpp"
 #include "rstruct/poles/ball_sets.hpp"
 #include "rstruct/sampling/random.hpp"
@@ -246,16 +246,23 @@ AlphaShape alpha_shape(const Instance& in, PoleLabel label, Observation& angles)
 }
 
 struct UpperBoundFailures {
-  long long nearest_pole_not_in_k = 0;  ///< the nearest pole is not a vertex of A
-  long long other = 0;
-  double worst_excess = 0;  ///< largest dist(s, A)/D̂(s) − 1 among them
+  long long nearest_pole_not_in_k = 0;  ///< samples whose nearest pole is not a vertex of A
+  long long failures = 0;               ///< of which dist(s, A) > D̂(s)
+  double worst_excess = 0;              ///< largest dist(s, A)/D̂(s) − 1 among them
+  /// Largest distance, over them, from the nearest pole to the nearest vertex of A,
+  /// relative to the nearest pole's polar radius.
+  double worst_pole_gap = 0;
 };
 
 /// Theorem 6.1's shrink factor.
 constexpr double kRhoTilde = 0.03;
 
-/// Samples per instance for which Lemma 5.4 is checked against every nearby simplex.
-constexpr int kLemma54Samples = 48;
+/// Samples per instance for which Lemma 5.4 is checked against every nearby simplex, and
+/// (about) for which Corollary 5.5 is measured: the α-shapes of the poles are thin
+/// clusters along the medial axis at distance ≈ D̂(s), so each query meets thousands of
+/// simplices; these caps keep the test within the CI budget.
+constexpr int kLemma54Samples = 32;
+constexpr std::size_t kCorollary55Samples = 2500;
 
 void check_alpha_shapes(const Instance& in, Table& t, UpperBoundFailures& upper) {
   const auto& poles = in.analysis.poles;
@@ -299,22 +306,53 @@ void check_alpha_shapes(const Instance& in, Table& t, UpperBoundFailures& upper)
       record(t.l54, d / nearest_vertex, in.id);
     }
   }
-  // Corollary 5.5 for every sample, measured as dist(s, A) ≤ l̃fs(s) (Proposition 2.1:
-  // DM ⊆ A). Only simplices within D̂(s) matter for both bounds; when there are none the
-  // search is repeated within 2 D̂(s) to measure how far A is.
-  for (std::size_t s = 0; s < in.samples.size(); ++s) {
+  // Corollary 5.5 for every step-th sample (all of them in small instances), measured as dist(s, A) ≤ l̃fs(s) (Proposition 2.1:
+  // DM ⊆ A). Lower bound: only simplices nearer than the smallest ratio seen so far can
+  // lower it, so the search radius is that ratio times D̂(s) (at most D̂(s)); when nothing
+  // is that near, the ratio is at least the radius's, which is what is recorded (never
+  // above the true ratio, so no violation can be hidden). Upper bound: if the nearest pole
+  // is a vertex of A, dist(s, A) ≤ D̂(s) holds and 1 is recorded (never below the true
+  // ratio); otherwise dist(s, A) is measured.
+  std::vector<std::uint32_t> vertex_tree_ids;
+  std::vector<Point3> vertex_positions;
+  for (std::uint32_t p = 0; p < poles.size(); ++p) {
+    if (pole_in_k[p]) {
+      vertex_tree_ids.push_back(p);
+      vertex_positions.push_back(poles.centre[p]);
+    }
+  }
+  const auto vertex_tree = std::make_unique<rstruct::poles::detail::PointKdTree>(vertex_positions);
+  double smallest_ratio = 1.0;
+  const std::size_t n = in.samples.size();
+  const std::size_t step = (n + kCorollary55Samples - 1) / kCorollary55Samples;
+  for (std::size_t s = random.below(step); s < n; s += step) {
     const Point3& q = in.samples[s];
     const double dhat = in.analysis.dhat.distance[s];
-    double d = index.distance_within(q, dhat, near);
-    if (d == HUGE_VAL) d = std::min(index.distance_within(q, 2.0 * dhat, near), 2.0 * dhat);
-    record(t.c55lo, d / dhat, in.id);
-    if (!record(t.c55hi, d / dhat, in.id)) {
-      upper.worst_excess = std::max(upper.worst_excess, d / dhat - 1.0);
-      if (!pole_in_k[in.analysis.dhat.nearest[s]]) {
-        ++upper.nearest_pole_not_in_k;
-      } else {
-        ++upper.other;
+    const double cap = smallest_ratio * dhat;
+    const double d = index.distance_within(q, cap, near);
+    const double lower = (d <= cap ? d : cap) / dhat;
+    smallest_ratio = std::min(smallest_ratio, lower);
+    record(t.c55lo, lower, in.id);
+    double upper_ratio = 1.0;
+    if (!pole_in_k[in.analysis.dhat.nearest[s]]) {
+      double full = index.distance_within(q, dhat, near);
+      if (full == HUGE_VAL) full = std::min(index.distance_within(q, 2.0 * dhat, near), 2.0 * dhat);
+      upper_ratio = full / dhat;
+      ++upper.nearest_pole_not_in_k;
+    }
+    if (!record(t.c55hi, upper_ratio, in.id)) {
+      upper.worst_excess = std::max(upper.worst_excess, upper_ratio - 1.0);
+      ++upper.failures;
+      // How far the nearest pole is from a pole that is a vertex of A, relative to its
+      // polar radius: the suspected cause is a second, nearly coincident Voronoi vertex.
+      const std::uint32_t p = in.analysis.dhat.nearest[s];
+      double gap = HUGE_VAL;
+      near.clear();  // candidates_within appends
+      vertex_tree->candidates_within(poles.centre[p], poles.radius[p], near);
+      for (const std::uint32_t k : near) {
+        gap = std::min(gap, rstruct::distance(poles.centre[p], poles.centre[vertex_tree_ids[k]]));
       }
+      upper.worst_pole_gap = std::max(upper.worst_pole_gap, gap / poles.radius[p]);
     }
   }
 }
@@ -402,14 +440,13 @@ void check_surface_balls(const Instance& in, Table& t, int fibres_per_instance) 
     centres.push_back(b.c);
     max_radius = std::max(max_radius, b.r);
   }
-  // The union of all surface balls through the pipeline (ρ̃ = 0: no pruning): its dual
-  // complex K is homotopy-equivalent to the union.
-  rstruct::pipeline::SeedOptions options;
-  options.rho = in.rho;
-  options.rho_tilde = 0.0;
-  const auto seed = rstruct::pipeline::compute_seed_polytope(in.samples, options);
-  CHECK(seed.dhat == in.analysis.dhat.distance);  // same D̂ as the pole analysis
-  const auto& betti = seed.betti_k;
+  // K of the union of all surface balls: regular triangulation, dual complex (α = 0),
+  // homology over Z₂.
+  std::vector<double> weights;
+  for (const auto& ball : balls) weights.push_back(ball.r * ball.r);
+  const rstruct::triangulation::RegularTriangulation3 regular(centres, weights);
+  const auto betti =
+      rstruct::complex::betti_numbers(rstruct::complex::dual_complex(regular).complex());
   INFO("Lemma 5.6: Betti numbers of the union of surface balls " << betti << ", of F "
                                                                  << in.surface_betti);
   CHECK(record(t.l56, betti == in.surface_betti ? 0 : 1, in.id));
@@ -460,30 +497,23 @@ void check_surface_balls(const Instance& in, Table& t, int fibres_per_instance) 
   }
 }
 
-/// Theorem 6.1: prune by a set cover of the samples with the shrunk balls B(u, ρ̃ D̂(u)),
-/// then the union of the kept original balls B(u, ρ D̂(u)) must have F's Betti numbers.
+/// Theorem 6.1 through the pipeline (seed_polytope.hpp, which prunes with prune_balls): a
+/// set cover of the samples by the shrunk balls B(u, ρ̃ D̂(u)), ρ̃ = 0.03; the union of the
+/// kept original balls B(u, ρ D̂(u)) must have F's Betti numbers (K of the kept balls).
 void check_pruned_balls(const Instance& in, Table& t, std::size_t& kept, std::size_t& total) {
-  const auto& dhat = in.analysis.dhat.distance;
-  const auto shrunk = rstruct::poles::scaled_sample_balls(in.samples, dhat, kRhoTilde);
-  rstruct::pipeline::PruneOptions options;
-  options.time_limit = 0.05;  // any cover carries Theorem 6.1; no need for the best one
-  const auto pruned = rstruct::pipeline::prune_balls(shrunk, in.samples, options);
-  std::vector<Point3> centres;
-  std::vector<double> weights;
-  for (const std::uint32_t u : pruned.kept) {
-    centres.push_back(in.samples[u]);
-    const double radius = in.rho * dhat[u];
-    weights.push_back(radius * radius);
-  }
-  kept += pruned.kept.size();
+  rstruct::pipeline::SeedOptions options;
+  options.rho = in.rho;
+  options.rho_tilde = kRhoTilde;
+  options.prune.time_limit = 0.05;  // any cover carries Theorem 6.1; no need for the best
+  const auto seed = rstruct::pipeline::compute_seed_polytope(in.samples, options);
+  CHECK(seed.dhat == in.analysis.dhat.distance);  // the same D̂ as the pole analysis
+  CHECK(seed.pruned);
+  kept += seed.kept.size();
   total += in.samples.size();
-  const rstruct::triangulation::RegularTriangulation3 regular(centres, weights);
-  const auto betti =
-      rstruct::complex::betti_numbers(rstruct::complex::dual_complex(regular).complex());
-  INFO("Theorem 6.1: Betti numbers of the pruned union " << betti << ", of F "
+  INFO("Theorem 6.1: Betti numbers of the pruned union " << seed.betti_k << ", of F "
                                                          << in.surface_betti << ", kept "
-                                                         << pruned.kept.size());
-  CHECK(record(t.t61, betti == in.surface_betti ? 0 : 1, in.id));
+                                                         << seed.kept.size());
+  CHECK(record(t.t61, seed.betti_k == in.surface_betti ? 0 : 1, in.id));
 }
 
 std::string table_path() {
@@ -575,10 +605,10 @@ TEST_CASE("paper lemmas on certified r-samples of spheres, ellipsoids and tori",
   t.l53out.note = "box poles excluded";
   t.l54.note = "v = s; edges and triangles of A within 2 D̂(s)";
   t.c55lo.note = "E4: sqrt(2/3) = 0.8165 < 0.817";
-  t.c55hi.note = "not asserted: " + std::to_string(upper.nearest_pole_not_in_k) +
-                 " failures with the nearest pole not a vertex of A, " +
-                 std::to_string(upper.other) + " other; largest excess " +
-                 lem::format_value(upper.worst_excess);
+  t.c55hi.note = "reported: " + std::to_string(upper.nearest_pole_not_in_k) +
+                 " samples whose nearest pole is not a vertex of A (hidden); largest excess " +
+                 lem::format_value(upper.worst_excess) + ", their nearest pole within " +
+                 lem::format_value(upper.worst_pole_gap) + " R_p of a vertex of A";
   t.l56.note = std::to_string(rho_beyond_proof) +
                " instances with ρ > 0.3979, beyond the corrected proof (E5)";
   t.l56f.note = "type-1 fibres of U(DMAT_in), " + std::to_string(fibres_per_instance) +
@@ -596,5 +626,11 @@ TEST_CASE("paper lemmas on certified r-samples of spheres, ellipsoids and tori",
   const std::string table = lem::markdown_table(rows, title);
   std::ofstream(table_path()) << table;
   std::cout << "\n" << table << std::flush;
-  CHECK(upper.other == 0);  // a failure with the nearest pole in A would be a measuring bug
+  // The upper bound of Corollary 5.5 is reported, not asserted: every violation seen is a
+  // rounding artefact (see the report), but A only bounds l̃fs from below, so this is not
+  // a test of l̃fs ≤ D̂. What is asserted is that the violations stay below the poles'
+  // construction error (circumcentres are rounded; poles/circumsphere.hpp: a small
+  // multiple of 2⁻²⁶ of the circumradius): a larger one would be a real counterexample.
+  INFO("Corollary 5.5 upper bound: largest excess " << upper.worst_excess);
+  CHECK(upper.worst_excess <= 0x1p-20);
 }
