@@ -35,7 +35,8 @@ struct Observation {
   long long measured = 0; ///< how many values were measured
   long long failures = 0; ///< how many violated the bound
   int instances = 0;      ///< instances that contributed at least one value
-  std::string note;       ///< reported, not asserted, etc.
+  std::string note;       ///< caveats, counts, errata
+  bool asserted = true;   ///< false: the row is reported, its bound is not a claim checked
   int last_instance = -1;
 
   void add(double value, int instance) {
