@@ -32,7 +32,8 @@ double env_number(const char* name, double fallback) {
 
 LemmaSettings settings_from_environment() {
   LemmaSettings s;
-  s.seed = static_cast<std::uint64_t>(env_number("RSTRUCT_LEMMAS_SEED", static_cast<double>(s.seed)));
+  s.seed =
+      static_cast<std::uint64_t>(env_number("RSTRUCT_LEMMAS_SEED", static_cast<double>(s.seed)));
   s.instances = static_cast<int>(env_number("RSTRUCT_LEMMAS_INSTANCES", s.instances));
   s.r_min = env_number("RSTRUCT_LEMMAS_RMIN", s.r_min);
   s.max_points = static_cast<std::size_t>(
@@ -45,9 +46,9 @@ LemmaSettings settings_from_environment() {
 
 std::string Instance::describe() const {
   std::ostringstream out;
-  out << "instance " << id << ": " << surface->name() << ", r drawn " << r_drawn
-      << ", certified " << r_certified << ", " << samples.size() << " samples, "
-      << analysis.poles.size() << " poles, rho " << rho;
+  out << "instance " << id << ": " << surface->name() << ", r drawn " << r_drawn << ", certified "
+      << r_certified << ", " << samples.size() << " samples, " << analysis.poles.size()
+      << " poles, rho " << rho;
   return out.str();
 }
 

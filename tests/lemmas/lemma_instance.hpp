@@ -39,9 +39,9 @@ LemmaSettings settings_from_environment();
 
 struct Instance {
   int id = 0;
-  std::string shape;                                  ///< "sphere", "ellipsoid", "torus"
-  std::shared_ptr<const sampling::Surface> surface;   ///< placed (rotated, translated)
-  complex::BettiNumbers surface_betti;                ///< F's Betti numbers
+  std::string shape;                                 ///< "sphere", "ellipsoid", "torus"
+  std::shared_ptr<const sampling::Surface> surface;  ///< placed (rotated, translated)
+  complex::BettiNumbers surface_betti;               ///< F's Betti numbers
   double r_drawn = 0;
   double r_certified = 0;  ///< certificate upper bound: S is an r_certified-sample
   std::vector<Point3> samples;

@@ -31,12 +31,12 @@ struct Observation {
   std::string constant;   ///< the paper's bound as text, e.g. "> 0.9807"
   double bound = 0;       ///< the same as a number (for the margin)
   Direction direction = Direction::at_most;
-  double worst = NAN;     ///< the tightest value observed (NaN: nothing measured)
-  long long measured = 0; ///< how many values were measured
-  long long failures = 0; ///< how many violated the bound
-  int instances = 0;      ///< instances that contributed at least one value
-  std::string note;       ///< caveats, counts, errata
-  bool asserted = true;   ///< false: the row is reported, its bound is not a claim checked
+  double worst = NAN;      ///< the tightest value observed (NaN: nothing measured)
+  long long measured = 0;  ///< how many values were measured
+  long long failures = 0;  ///< how many violated the bound
+  int instances = 0;       ///< instances that contributed at least one value
+  std::string note;        ///< caveats, counts, errata
+  bool asserted = true;    ///< false: the row is reported, its bound is not a claim checked
   int last_instance = -1;
 
   void add(double value, int instance) {
@@ -52,9 +52,7 @@ struct Observation {
     if (!ok) ++failures;
   }
   /// Margin to the bound: positive when the worst value satisfies it.
-  double margin() const {
-    return direction == Direction::at_least ? worst - bound : bound - worst;
-  }
+  double margin() const { return direction == Direction::at_least ? worst - bound : bound - worst; }
 };
 
 inline std::string format_value(double v) {
@@ -78,8 +76,7 @@ inline std::string markdown_table(const std::vector<Observation>& rows, const st
     } else {
       out << format_value(o.worst) << " | " << format_value(o.margin()) << " | ";
     }
-    out << o.failures << " / " << o.measured << " | " << o.instances << " | " << o.note
-        << " |\n";
+    out << o.failures << " / " << o.measured << " | " << o.instances << " | " << o.note << " |\n";
   }
   return out.str();
 }
