@@ -32,8 +32,13 @@ double env_number(const char* name, double fallback) {
 
 LemmaSettings settings_from_environment() {
   LemmaSettings s;
-  s.seed =
-      static_cast<std::uint64_t>(env_number("RSTRUCT_LEMMAS_SEED", static_cast<double>(s.seed)));
+  if (const char* text = std::getenv("RSTRUCT_LEMMAS_SEED"); text != nullptr && *text != '\0') {
+    char* end = nullptr;
+    s.seed = std::strtoull(text, &end, 10);
+    if (end == text || *end != '\0') {
+      throw InvalidInput(std::string("RSTRUCT_LEMMAS_SEED: not an integer: '") + text + "'");
+    }
+  }
   s.instances = static_cast<int>(env_number("RSTRUCT_LEMMAS_INSTANCES", s.instances));
   s.r_min = env_number("RSTRUCT_LEMMAS_RMIN", s.r_min);
   s.max_points = static_cast<std::size_t>(

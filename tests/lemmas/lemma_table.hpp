@@ -62,6 +62,16 @@ inline std::string format_value(double v) {
   return buffer;
 }
 
+/// `text` with every '|' escaped, so that it stays inside one Markdown table cell.
+inline std::string cell(const std::string& text) {
+  std::string out;
+  for (const char ch : text) {
+    if (ch == '|') out += '\\';
+    out += ch;
+  }
+  return out;
+}
+
 /// The table in Markdown.
 inline std::string markdown_table(const std::vector<Observation>& rows, const std::string& title) {
   std::ostringstream out;
@@ -70,7 +80,7 @@ inline std::string markdown_table(const std::vector<Observation>& rows, const st
          "instances | note |\n";
   out << "| --- | --- | --- | --- | --- | --- | --- |\n";
   for (const Observation& o : rows) {
-    out << "| " << o.statement << " | " << o.constant << " | ";
+    out << "| " << cell(o.statement) << " | " << cell(o.constant) << " | ";
     if (o.direction == Direction::count) {
       out << o.failures << " failing | — | ";
     } else {

@@ -69,10 +69,10 @@ struct Table {
                        "O(1) (3.5025 at r = 0.08; reported)", 0.2802 / 0.08, Direction::at_most};
   Observation l43a{"L4.3a angle(xp, n_x), x ∈ F ∩ B_p [deg]", "≤ 14.99° (r = 0.08)", 14.99,
                    Direction::at_most};
-  Observation l43b{"L4.3b penetration (R_p − |x−p|)/lfs(x)", "≤ 0.0114 (3/2 r² lfs)", 0.0114,
+  Observation l43b{"L4.3b penetration (R_p − ‖x−p‖)/lfs(x)", "≤ 0.0114 (3/2 r² lfs)", 0.0114,
                    Direction::at_most};
   Observation l51{"L5.1 lfs(s)/D̂(s)", "≤ 1.2802", 1.2802, Direction::at_most};
-  Observation l52a{"L5.2a |v−s|/lfs(s), Voronoi vertex outside its polar ball", "≤ 0.123", 0.123,
+  Observation l52a{"L5.2a ‖v−s‖/lfs(s), Voronoi vertex outside its polar ball", "≤ 0.123", 0.123,
                    Direction::at_most};
   Observation l52b{"L5.2b dist(v,F)/lfs(s)", "≤ 0.0355", 0.0355, Direction::at_most};
   Observation l52c{"L5.2b dist(v,F)/lfs(v̄)", "≤ 0.0424", 0.0424, Direction::at_most};
@@ -80,7 +80,7 @@ struct Table {
                     Direction::at_least};
   Observation l53out{"L5.3 exterior angle, edges of A_out [deg]", "≥ 120°", 120.0,
                      Direction::at_least};
-  Observation l54{"L5.4 |m−s|/min_vertex |q−s|, m ∈ edge/triangle of A", "≥ 0.817", 0.817,
+  Observation l54{"L5.4 ‖m−s‖/min_vertex ‖q−s‖, m ∈ edge/triangle of A", "≥ 0.817", 0.817,
                   Direction::at_least};
   Observation c55lo{"Cor 5.5 dist(s, A_in ∪ A_out)/D̂(s)", "≥ 0.817", 0.817, Direction::at_least};
   Observation c55hi{"Cor 5.5 upper: dist(s, A_in ∪ A_out)/D̂(s)", "≤ 1 (reported)", 1.0,
@@ -396,6 +396,7 @@ TEST_CASE("measurement helpers agree with brute force", "[lemmas]") {
   CHECK(lem::exterior_intersection_angle_deg(3, 4, 5) == Approx(90));
   CHECK(lem::exterior_intersection_angle_deg(1, 1, 1e-9) == Approx(180).margin(1e-6));
   CHECK(lemma_4_2_bound(0.08) == Approx(0.980738).margin(1e-6));
+  CHECK(lem::cell("|v − s|") == "\\|v − s\\|");  // table cells keep their pipes
 }
 
 namespace {
