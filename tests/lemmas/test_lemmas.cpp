@@ -210,7 +210,6 @@ void check_voronoi_vertices(const Instance& in, Table& t, std::size_t& no_pole_o
 
 struct AlphaShape {
   std::vector<std::uint32_t> pole;  ///< ball k is pole[k]
-  std::vector<bool> is_k_vertex;    ///< per ball: a vertex of K (α = 0)
   rstruct::complex::SimplicialComplex k;
 };
 
@@ -225,11 +224,9 @@ AlphaShape alpha_shape(const Instance& in, PoleLabel label, Observation& angles)
     centres.push_back(poles.centre[p]);
     weights.push_back(poles.radius[p] * poles.radius[p]);
   }
-  a.is_k_vertex.assign(a.pole.size(), false);
   if (a.pole.size() < 4) return a;  // e.g. a sphere's A_out: no finite outer poles
   const rstruct::triangulation::RegularTriangulation3 regular(centres, weights);
   a.k = rstruct::complex::dual_complex(regular).complex();
-  for (const auto v : a.k.vertices()) a.is_k_vertex[v] = true;
   for (const auto& e : a.k.edges()) {
     const std::uint32_t p = a.pole[e[0]], q = a.pole[e[1]];
     record(
