@@ -28,7 +28,7 @@ inline constexpr double kPaperR = 0.08;  // the paper's sampling constant
 
 struct LemmaSettings {
   std::uint64_t seed = 20090715;
-  int instances = 6;
+  int instances = 5;
   double r_min = 0.05;
   std::size_t max_points = 6000;
 };

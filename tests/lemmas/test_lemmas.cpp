@@ -254,8 +254,8 @@ constexpr double kRhoTilde = 0.03;
 /// (about) for which Corollary 5.5 is measured: the α-shapes of the poles are thin
 /// clusters along the medial axis at distance ≈ D̂(s), so each query meets thousands of
 /// simplices; these caps keep the test within the CI budget.
-constexpr int kLemma54Samples = 32;
-constexpr std::size_t kCorollary55Samples = 2500;
+constexpr int kLemma54Samples = 24;
+constexpr std::size_t kCorollary55Samples = 1500;
 
 void check_alpha_shapes(const Instance& in, Table& t, UpperBoundFailures& upper) {
   const auto& poles = in.analysis.poles;
