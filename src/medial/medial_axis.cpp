@@ -623,18 +623,28 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
             if (pv.key.v[0] == kTet && !inner[pv.key.v[1]]) keep = false;
           }
           if (!keep) continue;
-          std::vector<std::uint32_t> ids;
+          // Consecutive repeats (a side cut to nothing) go; a face that shrinks to one
+          // point adds nothing (the point, if medial, comes with the faces around it).
+          std::vector<const PolyVertex*> distinct_run;
           for (const PolyVertex& pv : poly) {
-            double radius = distance(pv.p, bv[a].point);
-            std::uint32_t source = kNone;
-            if (pv.key.v[0] == kCentre) {
-              radius = balls[pv.key.v[1]].r;
-              source = pv.key.v[1];
+            if (distinct_run.empty() || !(distinct_run.back()->key == pv.key)) {
+              distinct_run.push_back(&pv);
             }
-            const std::uint32_t id = builder.vertex(pv.key, pv.p, radius, kind_of(pv.key), source);
-            if (ids.empty() || ids.back() != id) ids.push_back(id);
           }
-          while (ids.size() > 1 && ids.front() == ids.back()) ids.pop_back();
+          while (distinct_run.size() > 1 && distinct_run.front()->key == distinct_run.back()->key) {
+            distinct_run.pop_back();
+          }
+          if (distinct_run.size() < 2) continue;
+          std::vector<std::uint32_t> ids;
+          for (const PolyVertex* pv : distinct_run) {
+            double radius = distance(pv->p, bv[a].point);
+            std::uint32_t source = kNone;
+            if (pv->key.v[0] == kCentre) {
+              radius = balls[pv->key.v[1]].r;
+              source = pv->key.v[1];
+            }
+            ids.push_back(builder.vertex(pv->key, pv->p, radius, kind_of(pv->key), source));
+          }
           std::vector<std::uint32_t> sorted = ids;
           std::sort(sorted.begin(), sorted.end());
           const bool distinct = std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
