@@ -57,6 +57,17 @@ TEST_CASE("equal balls on a grid, overlapping across face diagonals", "[medial]"
   CHECK(b == stats.betti_k);
 }
 
+TEST_CASE("equal balls on a non-dyadic grid: four spheres through a point", "[medial]") {
+  // Spacing 0.1 (not representable): the centres are rounded, yet the points of V of the
+  // two facets of a grid square still round to the same doubles.
+  std::vector<Ball> balls = grid(3, 3, 2, 0.075);
+  for (Ball& b : balls) b.c = 0.1 * b.c;
+  MedialAxisStats stats;
+  const auto b = axis_betti(balls, stats);
+  CHECK(stats.betti_k == complex::BettiNumbers{{1, 0, 4, 0}});
+  CHECK(b == stats.betti_k);
+}
+
 TEST_CASE("equal balls on a grid, perturbed by 2^-45", "[medial][.degenerate]") {
   // Known failure: the perturbation moves the points of V from the facets of one square
   // apart by a few ulps, so they are distinct, nearly coincident Delaunay vertices, each
