@@ -69,9 +69,9 @@ TEST_CASE("equal balls on a non-dyadic grid: four spheres through a point", "[me
 }
 
 TEST_CASE("equal balls on a grid, perturbed by 2^-45", "[medial][.degenerate]") {
-  // Known failure: the perturbation moves the points of V from the facets of one square
-  // apart by a few ulps, so they are distinct, nearly coincident Delaunay vertices, each
-  // on three of the four spheres (DESIGN.md §6: four spheres through one point).
+  // Known failure: after the perturbation no four spheres share a point, but the points of
+  // V around each grid square are ~1e-13 apart, the size of the rounding of their double
+  // constructions, so the Delaunay/Voronoi structure of V is not the true one.
   std::vector<Ball> balls = grid(3, 3, 2, 0.75);
   for (std::size_t i = 0; i < balls.size(); ++i) {
     balls[i].c.x += std::ldexp(static_cast<double>(i % 5) - 2.0, -45);

@@ -40,9 +40,10 @@
 /// Four or more spheres through one boundary point (e.g. equal balls on a grid) give one
 /// point of V per facet of K around it. When these round to the same doubles (the exact
 /// grids of the tests) they are one Delaunay vertex on all those spheres and the axis is
-/// right. Known limitation: when they round to different doubles (such inputs perturbed by
-/// a few ulps) they stay nearly coincident, distinct sites, each on three spheres, and the
-/// axis may miss or gain small cycles or cavities (test "[.degenerate]").
+/// right. Known limitation: nearly degenerate inputs (such a grid perturbed by 2⁻⁴⁵) have
+/// points of V closer together than the rounding of their constructions; the Delaunay
+/// structure of the rounded points is then not the true one and the axis may miss or gain
+/// small cycles or cavities (test "[.degenerate]").
 
 #include <array>
 #include <cstdint>
