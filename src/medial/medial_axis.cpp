@@ -49,9 +49,9 @@ struct KeyHash {
 Key tet_key(CellId c) { return Key{{kTet, c, kNone, kNone, kNone, kNone, kNone}}; }
 Key centre_key(std::uint32_t m) { return Key{{kCentre, m, kNone, kNone, kNone, kNone, kNone}}; }
 
-/// A set of up to three ball ids, increasing, padded with kNone.
+/// A set of up to eight ball ids, increasing, padded with kNone.
 struct IdSet {
-  std::array<std::uint32_t, 3> id{kNone, kNone, kNone};
+  std::array<std::uint32_t, 8> id{kNone, kNone, kNone, kNone, kNone, kNone, kNone, kNone};
   int size = 0;
   bool contains(std::uint32_t x) const {
     for (int i = 0; i < size; ++i) {
@@ -60,7 +60,7 @@ struct IdSet {
     return false;
   }
   void insert(std::uint32_t x) {
-    if (contains(x) || size == 3) return;
+    if (contains(x) || size == 8) return;
     int i = size++;
     for (; i > 0 && id[i - 1] > x; --i) id[i] = id[i - 1];
     id[i] = x;
@@ -79,6 +79,45 @@ IdSet tag_set(const BoundaryVertex& v) {
   IdSet s;
   for (auto b : v.balls) s.insert(b);
   return s;
+}
+
+/// A face of the normal cone of a boundary vertex a: the plane (a, c_p, c_q), with the
+/// cone on the side `inside` (orient3d sign of the other generators).
+struct ConeFace {
+  std::uint32_t p = 0;
+  std::uint32_t q = 0;
+  Sign inside = Sign::zero;
+};
+
+/// A Delaunay vertex of V: its point and every ball it lies on. Points of V from different
+/// facets that round to exactly the same coordinates (four or more spheres through one
+/// point, e.g. equal balls on a grid) are one Delaunay vertex; it gets all their balls.
+struct Site {
+  Point3 point;
+  IdSet tags;
+  std::vector<ConeFace> faces;
+};
+
+/// Faces of cone(a) = a + cone(c_t − a : t ∈ tags): the pairs {p, q} whose plane through a
+/// has every other generator on one side (exact orient3d).
+std::vector<ConeFace> cone_faces(const Site& site, std::span<const Ball> balls) {
+  std::vector<ConeFace> faces;
+  const IdSet& t = site.tags;
+  for (int i = 0; i < t.size; ++i) {
+    for (int j = i + 1; j < t.size; ++j) {
+      int positive = 0, negative = 0;
+      for (int r = 0; r < t.size; ++r) {
+        if (r == i || r == j) continue;
+        const Sign s = predicates::orient3d(site.point, balls[t.id[i]].c, balls[t.id[j]].c,
+                                            balls[t.id[r]].c);
+        positive += s == Sign::positive ? 1 : 0;
+        negative += s == Sign::negative ? 1 : 0;
+      }
+      if ((positive == 0) == (negative == 0)) continue;  // not a face, or a flat cone
+      faces.push_back({t.id[i], t.id[j], positive > 0 ? Sign::positive : Sign::negative});
+    }
+  }
+  return faces;
 }
 
 // ---- clipping --------------------------------------------------------------------------
@@ -105,31 +144,25 @@ struct Plane {
 
 class Clipper {
  public:
-  Clipper(std::span<const Ball> balls, std::span<const BoundaryVertex> v)
-      : balls_(balls), v_(v) {}
+  Clipper(std::span<const Ball> balls, std::span<const Site> sites)
+      : balls_(balls), sites_(sites) {}
 
   /// Clips the polygon of the Voronoi face F(a, b) by the faces of a's normal cone that
-  /// contain an axis c_i c_j lying in F(a, b), i.e. for the pairs {i, j} of balls shared by
-  /// a and b: the half-space of the plane (a, c_i, c_j) containing c_k, k a's third ball.
+  /// contain an axis c_p c_q lying in F(a, b), i.e. whose balls p, q both a and b lie on:
+  /// the half-space of the plane (a, c_p, c_q) holding the cone.
   void clip(std::uint32_t a, std::uint32_t b, std::vector<PolyVertex>& poly,
             std::vector<SideOrigin>& sides) {
-    const BoundaryVertex& va = v_[a];
-    const IdSet tab = intersect(tag_set(va), tag_set(v_[b]));
+    const Site& sa = sites_[a];
+    const IdSet tab = intersect(sa.tags, sites_[b].tags);
     if (tab.size < 2) return;
-    for (int skip = 0; skip < 3 && !poly.empty(); ++skip) {
-      const std::uint32_t k = va.balls[skip];
-      if (tab.size == 2 && tab.contains(k)) continue;  // {i, j} must be the shared pair
+    for (const ConeFace& face : sa.faces) {
+      if (poly.empty()) return;
+      if (!tab.contains(face.p) || !tab.contains(face.q)) continue;
       Plane plane;
-      plane.corner[0] = va.point;
-      int m = 1;
-      for (int q = 0; q < 3; ++q) {
-        if (q == skip) continue;
-        plane.corner[m++] = balls_[va.balls[q]].c;
-        plane.centres.insert(va.balls[q]);
-      }
-      plane.inside = predicates::orient3d(plane.corner[0], plane.corner[1], plane.corner[2],
-                                          balls_[k].c);
-      if (plane.inside == Sign::zero) continue;  // a flat cone: tangent spheres
+      plane.corner = {sa.point, balls_[face.p].c, balls_[face.q].c};
+      plane.centres.insert(face.p);
+      plane.centres.insert(face.q);
+      plane.inside = face.inside;
       plane.normal = cross(plane.corner[1] - plane.corner[0], plane.corner[2] - plane.corner[0]);
       clip_by(plane, a, b, tab, poly, sides);
     }
@@ -146,8 +179,8 @@ class Clipper {
     if (o.voronoi_edge) {
       // The Voronoi edge of triangle (a, b, x) passes through every centre its three
       // points share; if the cutting face also contains that centre, they meet there.
-      if (o.third < v_.size()) {  // not a far point
-        const IdSet shared = intersect(intersect(tab, tag_set(v_[o.third])), plane.centres);
+      if (o.third < sites_.size()) {  // not a far point
+        const IdSet shared = intersect(intersect(tab, sites_[o.third].tags), plane.centres);
         if (shared.size > 0) return centre_key(shared.id[0]);
       }
       std::array<std::uint32_t, 3> t{a, b, o.third};
@@ -224,7 +257,7 @@ class Clipper {
   }
 
   std::span<const Ball> balls_;
-  std::span<const BoundaryVertex> v_;
+  std::span<const Site> sites_;
   std::uint32_t other_counter_ = 0;
 };
 
@@ -251,15 +284,12 @@ class Builder {
   std::unordered_map<Key, std::uint32_t, KeyHash> index_;
 };
 
-/// x lies in the normal cone of the boundary vertex a: on the side of every plane
-/// (a, c_i, c_j) that holds c_k. Exact orient3d on the double points.
-bool in_normal_cone(const Point3& x, const BoundaryVertex& a, std::span<const Ball> balls) {
-  for (int k = 0; k < 3; ++k) {
-    const Point3& ci = balls[a.balls[(k + 1) % 3]].c;
-    const Point3& cj = balls[a.balls[(k + 2) % 3]].c;
-    const Sign inside = predicates::orient3d(a.point, ci, cj, balls[a.balls[k]].c);
-    const Sign s = predicates::orient3d(a.point, ci, cj, x);
-    if (to_int(s * inside) < 0) return false;
+/// x lies in the normal cone of the boundary vertex: on the cone's side of every face.
+/// Exact orient3d on the double points.
+bool in_normal_cone(const Point3& x, const Site& site, std::span<const Ball> balls) {
+  for (const ConeFace& f : site.faces) {
+    const Sign s = predicates::orient3d(site.point, balls[f.p].c, balls[f.q].c, x);
+    if (to_int(s * f.inside) < 0) return false;
   }
   return true;
 }
@@ -267,15 +297,15 @@ bool in_normal_cone(const Point3& x, const BoundaryVertex& a, std::span<const Ba
 /// The Voronoi vertex x of a Delaunay cell of V is medial iff its Voronoi ball lies in U:
 /// x must lie in U (exact power tests against the balls) and in the normal cone of each of
 /// its four sites (otherwise the ball leaves U beside that site).
-bool is_inner_voronoi_vertex(const Point3& x, const std::array<std::uint32_t, 4>& sites,
-                             std::span<const BoundaryVertex> v, std::span<const Ball> balls,
-                             const RegularTriangulation3& rt, CellId& hint) {
+bool is_inner_voronoi_vertex(const Point3& x, const std::array<std::uint32_t, 4>& cell,
+                             std::span<const Site> sites, const RegularTriangulation3& rt,
+                             std::span<const Ball> balls, CellId& hint) {
   if (!is_finite(x)) return false;
   const auto nearest = rt.nearest_power_vertex(x, hint);
   hint = rt.incident_cell(nearest);
   if (predicates::power_sign(x, rt.weighted_point(nearest)) == Sign::positive) return false;
-  for (auto s : sites) {
-    if (!in_normal_cone(x, v[s], balls)) return false;
+  for (auto s : cell) {
+    if (!in_normal_cone(x, sites[s], balls)) return false;
   }
   return true;
 }
@@ -464,12 +494,22 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
   st.boundary_vertices = bv.size();
   if (!bv.empty()) {
     const auto nv = static_cast<std::uint32_t>(bv.size());
-    std::vector<Point3> sites;
-    sites.reserve(nv + 4);
-    for (const BoundaryVertex& v : bv) sites.push_back(v.point);
-    for (const Point3& p : far_points(balls)) sites.push_back(p);
-    const RegularTriangulation3 del(std::move(sites));
+    std::vector<Point3> points;
+    points.reserve(nv + 4);
+    for (const BoundaryVertex& v : bv) points.push_back(v.point);
+    for (const Point3& p : far_points(balls)) points.push_back(p);
+    const RegularTriangulation3 del(std::move(points));
     st.delaunay_cells = del.number_of_finite_cells();
+
+    std::vector<Site> site(nv);
+    for (std::uint32_t v = 0; v < nv; ++v) site[v] = {bv[v].point, tag_set(bv[v]), {}};
+    for (const auto& d : del.duplicate_points()) {
+      if (d.point >= nv || d.vertex >= nv) continue;
+      for (auto b : bv[d.point].balls) site[d.vertex].tags.insert(b);
+    }
+    for (std::uint32_t v = 0; v < nv; ++v) {
+      if (del.is_vertex(v)) site[v].faces = cone_faces(site[v], balls);
+    }
 
     // Cells whose common facet has five exactly cospherical points (unperturbed insphere
     // on the rounded points) have the same Voronoi vertex: one vertex per such group.
@@ -510,7 +550,7 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
         if (vs[q] >= nv) {
           has_far = true;
         } else {
-          shared = q == 0 ? tag_set(bv[vs[q]]) : intersect(shared, tag_set(bv[vs[q]]));
+          shared = q == 0 ? site[vs[q]].tags : intersect(shared, site[vs[q]].tags);
         }
       }
       if (!has_far && shared.size > 0) {
@@ -522,7 +562,7 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
         cell_vertex[c] = {tet_key(c), del.circumcenter(c)};
         cell_radius[c] = std::sqrt(del.squared_circumradius(c));
         if (!has_far) {
-          inner[c] = is_inner_voronoi_vertex(cell_vertex[c].p, vs, bv, balls, rt, hint) ? 1 : 0;
+          inner[c] = is_inner_voronoi_vertex(cell_vertex[c].p, vs, site, rt, balls, hint) ? 1 : 0;
         }
       }
     });
@@ -545,7 +585,7 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
       }
     });
 
-    Clipper clipper(balls, bv);
+    Clipper clipper(balls, site);
     std::unordered_set<std::uint64_t> seen;
     std::vector<PolyVertex> poly;
     std::vector<SideOrigin> sides;
@@ -583,18 +623,28 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
             if (pv.key.v[0] == kTet && !inner[pv.key.v[1]]) keep = false;
           }
           if (!keep) continue;
-          std::vector<std::uint32_t> ids;
+          // Consecutive repeats (a side cut to nothing) go; a face that shrinks to one
+          // point adds nothing (the point, if medial, comes with the faces around it).
+          std::vector<const PolyVertex*> distinct_run;
           for (const PolyVertex& pv : poly) {
-            double radius = distance(pv.p, bv[a].point);
-            std::uint32_t source = kNone;
-            if (pv.key.v[0] == kCentre) {
-              radius = balls[pv.key.v[1]].r;
-              source = pv.key.v[1];
+            if (distinct_run.empty() || !(distinct_run.back()->key == pv.key)) {
+              distinct_run.push_back(&pv);
             }
-            const std::uint32_t id = builder.vertex(pv.key, pv.p, radius, kind_of(pv.key), source);
-            if (ids.empty() || ids.back() != id) ids.push_back(id);
           }
-          while (ids.size() > 1 && ids.front() == ids.back()) ids.pop_back();
+          while (distinct_run.size() > 1 && distinct_run.front()->key == distinct_run.back()->key) {
+            distinct_run.pop_back();
+          }
+          if (distinct_run.size() < 2) continue;
+          std::vector<std::uint32_t> ids;
+          for (const PolyVertex* pv : distinct_run) {
+            double radius = distance(pv->p, bv[a].point);
+            std::uint32_t source = kNone;
+            if (pv->key.v[0] == kCentre) {
+              radius = balls[pv->key.v[1]].r;
+              source = pv->key.v[1];
+            }
+            ids.push_back(builder.vertex(pv->key, pv->p, radius, kind_of(pv->key), source));
+          }
           std::vector<std::uint32_t> sorted = ids;
           std::sort(sorted.begin(), sorted.end());
           const bool distinct = std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();

@@ -75,7 +75,7 @@ StableMedialAxis stable_medial_axis(std::span<const Point3> samples,
   // A ball enlarged by ε covers about shell² times the samples it covers at ε = 0 (the
   // ε-shell around its sphere), so every shell²-th sample keeps the matrix near its ε = 0
   // size.
-  const auto stride = static_cast<std::size_t>(std::clamp(std::round(shell * shell), 1.0, 32.0));
+  const auto stride = static_cast<std::size_t>(std::clamp(std::floor(shell * shell), 1.0, 32.0));
   std::vector<Point3> row_points;
   for (std::size_t i = 0; i < samples.size(); i += stride) row_points.push_back(samples[i]);
   out.cover_rows = row_points.size();
@@ -112,7 +112,18 @@ StableMedialAxis stable_medial_axis(std::span<const Point3> samples,
       out.kept.insert(out.kept.end(), repair.kept.begin(), repair.kept.end());
       std::sort(out.kept.begin(), out.kept.end());
       out.kept.erase(std::unique(out.kept.begin(), out.kept.end()), out.kept.end());
+      // The union of both covers is redundant: a last set cover over these balls only and
+      // every sample (a small matrix) drops what the other balls cover. Its own bound is
+      // not one for the whole instance (columns were removed), so the subset's is kept.
+      std::vector<Ball> candidates;
+      for (auto k : out.kept) candidates.push_back(polar.balls[k]);
+      const pipeline::PruneResult final_cover =
+          pipeline::prune_balls(candidates, samples, repair_options, &scratch_report);
+      std::vector<std::uint32_t> kept;
+      for (auto k : final_cover.kept) kept.push_back(out.kept[k]);
+      out.kept = std::move(kept);
       out.prune.kept = out.kept;
+      out.prune.entries += final_cover.entries;
       out.prune.cost = static_cast<double>(out.kept.size());
       out.prune.gap = (out.prune.cost - out.prune.lower_bound) / out.prune.cost;
       out.prune.optimal = out.prune.lower_bound >= out.prune.cost;

@@ -37,9 +37,13 @@
 /// and the cut points are rounded doubles; the Delaunay triangulation of V is the exact one
 /// of those rounded points (perturbed where they are cospherical).
 ///
-/// Known limitation: four or more spheres through one boundary point (e.g. equal balls on a
-/// grid) give nearly coincident points of V from different facets; the output keeps them
-/// apart and may then differ from U's homotopy type by small cycles.
+/// Four or more spheres through one boundary point (e.g. equal balls on a grid) give one
+/// point of V per facet of K around it. When these round to the same doubles (the exact
+/// grids of the tests) they are one Delaunay vertex on all those spheres and the axis is
+/// right. Known limitation: nearly degenerate inputs (such a grid perturbed by 2⁻⁴⁵) have
+/// points of V closer together than the rounding of their constructions; the Delaunay
+/// structure of the rounded points is then not the true one and the axis may miss or gain
+/// small cycles or cavities (test "[.degenerate]").
 
 #include <array>
 #include <cstdint>
