@@ -7,7 +7,7 @@
 // total, and a checksum (kept balls, output vertices, triangles, Betti numbers, manifold).
 //
 //   bench_seed [--runs 3] [--torus N] [--levels RHO:SHRINK,...] [--cover-time 0.3]
-//              [--threads 0] [--no-nested]
+//              [--threads 0] [--no-nested] [--random-order]
 
 #include <algorithm>
 #include <cstdio>
@@ -22,6 +22,7 @@
 #include "rstruct/pipeline/seed_polytope.hpp"
 #include "rstruct/poles/pole_analysis.hpp"
 #include "rstruct/sampling/sample_request.hpp"
+#include "rstruct/triangulation/spatial_sort.hpp"
 
 namespace {
 
@@ -98,6 +99,7 @@ int main(int argc, char** argv) {
   double cover_time = 0.3;
   unsigned threads = 0;
   bool nested = true;
+  bool random_order = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const auto next = [&]() -> const char* {
@@ -119,10 +121,12 @@ int main(int argc, char** argv) {
       threads = static_cast<unsigned>(std::atoi(next()));
     } else if (a == "--no-nested") {
       nested = false;
+    } else if (a == "--random-order") {
+      random_order = true;
     } else {
       std::fprintf(stderr,
                    "usage: bench_seed [--runs 3] [--torus N] [--levels RHO:SHRINK,...] "
-                   "[--cover-time 0.3] [--threads 0] [--no-nested]\n");
+                   "[--cover-time 0.3] [--threads 0] [--no-nested] [--random-order]\n");
       return a == "--help" ? 0 : 2;
     }
   }
@@ -132,9 +136,20 @@ int main(int argc, char** argv) {
   request.shape = torus > 0 ? "torus" : "double-torus";
   request.n = torus > 0 ? torus : 85237;
   request.seed = 1;
-  const std::vector<Point3> samples = rstruct::sampling::generate_sample(request).points;
-  std::printf("input: %s, %zu samples; levels %s; %d runs; cover time %.2f s\n",
-              request.shape.c_str(), samples.size(), levels_text.c_str(), runs, cover_time);
+  const std::vector<Point3> generated = rstruct::sampling::generate_sample(request).points;
+  // As `rstruct demo` (and compute_seed_polytope without a PoleAnalysis) do: samples along
+  // a Hilbert curve, for locality. --random-order keeps the sampler's order.
+  std::vector<Point3> samples;
+  if (random_order) {
+    samples = generated;
+  } else {
+    for (const std::uint32_t i : rstruct::triangulation::hilbert_order(generated)) {
+      samples.push_back(generated[i]);
+    }
+  }
+  std::printf("input: %s, %zu samples (%s order); levels %s; %d runs; cover time %.2f s\n",
+              request.shape.c_str(), samples.size(), random_order ? "sampler" : "Hilbert",
+              levels_text.c_str(), runs, cover_time);
 
   StageTimes poles;
   std::vector<StageTimes> level_times(levels.size());

@@ -18,6 +18,18 @@ using triangulation::VertexStars;
 
 constexpr std::size_t kChunk = 2048;
 
+/// A cell of a vertex's star, copied: its vertices and which of its facets are in K.
+struct StarCell {
+  std::array<VertexId, 4> v{};
+  std::array<std::uint8_t, 4> facet_in_k{};
+  int index(VertexId x) const {
+    for (int i = 0; i < 4; ++i) {
+      if (v[static_cast<std::size_t>(i)] == x) return i;
+    }
+    return -1;
+  }
+};
+
 /// What one worker found: simplices of K and counts of the triangulation.
 struct WorkerLists {
   std::vector<Tetrahedron> tetrahedra;
@@ -27,6 +39,7 @@ struct WorkerLists {
   std::array<std::size_t, 4> finite{};
   std::array<std::size_t, 4> facet_classes{};
   // Scratch of classify_edges and classify_vertex.
+  std::vector<StarCell> star;             // the current vertex's star
   std::vector<std::uint32_t> slot_of;     // vertex id → slot of an edge of the current vertex
   std::vector<std::uint8_t> edge_in_k;    // per slot
   std::vector<std::size_t> ring_offsets;  // per slot: its ring entries
@@ -55,7 +68,7 @@ class Classifier {
       for (std::size_t c = b; c < e; ++c) classify_cell(static_cast<CellId>(c), lists_[w]);
     });
     parallel_chunks(cap, threads_, kChunk, [&](std::size_t b, std::size_t e, unsigned w) {
-      for (std::size_t c = b; c < e; ++c) classify_facets(static_cast<CellId>(c), lists_[w]);
+      classify_facets(b, e, lists_[w]);
     });
     parallel_chunks(n, threads_, kChunk, [&](std::size_t b, std::size_t e, unsigned w) {
       for (std::size_t v = b; v < e; ++v) classify_edges(static_cast<VertexId>(v), lists_[w]);
@@ -90,37 +103,69 @@ class Classifier {
     }
   }
 
-  /// Facet i of c, for the neighbour with the larger id (each facet once). The flag is
-  /// written on both sides; no other worker writes either byte.
-  void classify_facets(CellId c, WorkerLists& out) {
-    if (!rt_.is_cell(c)) return;
+  /// The facets of the cells [b, e), each from the cell with the smaller id; the flag is
+  /// written on both sides (no other worker writes either byte). The neighbours' data are
+  /// read for a block of cells first: neighbours are scattered in memory, and independent
+  /// loads let the processor wait for several of them at once.
+  void classify_facets(std::size_t b, std::size_t e, WorkerLists& out) {
+    constexpr std::size_t kBlock = 16;
+    struct Side {
+      CellId n = 0;
+      int m = 0;
+      VertexId opposite = kInfiniteVertex;
+      int n_in_k = 0;
+    };
+    std::array<std::array<Side, 4>, kBlock> sides;
+    for (std::size_t start = b; start < e; start += kBlock) {
+      const std::size_t end = std::min(e, start + kBlock);
+      for (std::size_t c = start; c < end; ++c) {
+        if (!rt_.is_cell(static_cast<CellId>(c))) continue;
+        for (int i = 0; i < 4; ++i) {
+          Side& side = sides[c - start][static_cast<std::size_t>(i)];
+          side.n = rt_.neighbor(static_cast<CellId>(c), i);
+          if (side.n < c) continue;
+          side.m = rt_.mirror_index(static_cast<CellId>(c), i);
+          side.opposite = rt_.vertex(side.n, side.m);
+          side.n_in_k = cell_in_k_[side.n];
+        }
+      }
+      for (std::size_t c = start; c < end; ++c) {
+        if (rt_.is_cell(static_cast<CellId>(c))) {
+          classify_facets_of(static_cast<CellId>(c), sides[c - start], out);
+        }
+      }
+    }
+  }
+
+  template <class Sides>
+  void classify_facets_of(CellId c, const Sides& sides, WorkerLists& out) {
+    const auto v = rt_.vertices(c);
     for (int i = 0; i < 4; ++i) {
-      const CellId n = rt_.neighbor(c, i);
-      if (n < c) continue;
+      const auto& side = sides[static_cast<std::size_t>(i)];
+      if (side.n < c) continue;
       Triangle t{};
       bool finite = true;
       for (int j = 0, o = 0; j < 4; ++j) {
         if (j == i) continue;
-        t[o++] = rt_.vertex(c, j);
-        finite = finite && rt_.vertex(c, j) != kInfiniteVertex;
+        t[o++] = v[static_cast<std::size_t>(j)];
+        finite = finite && v[static_cast<std::size_t>(j)] != kInfiniteVertex;
       }
       if (!finite) continue;
       ++out.finite[2];
-      const int m = rt_.mirror_index(c, i);
-      const int tets_in_k = cell_in_k_[c] + cell_in_k_[n];
+      const int tets_in_k = cell_in_k_[c] + side.n_in_k;
       bool in_k = tets_in_k > 0;
       if (!in_k) {
         const std::array<WeightedPoint, 3> sigma{point(t[0]), point(t[1]), point(t[2])};
         std::array<WeightedPoint, 2> opposite;
         std::size_t count = 0;
-        for (const VertexId p : {rt_.vertex(c, i), rt_.vertex(n, m)}) {
+        for (const VertexId p : {v[static_cast<std::size_t>(i)], side.opposite}) {
           if (p != kInfiniteVertex) opposite[count++] = point(p);
         }
         in_k = orthosphere_is_unattached_in_union(sigma, {opposite.data(), count});
       }
       if (!in_k) continue;
       facet_in_k_[4 * std::size_t{c} + static_cast<std::size_t>(i)] = 1;
-      facet_in_k_[4 * std::size_t{n} + static_cast<std::size_t>(m)] = 1;
+      facet_in_k_[4 * std::size_t{side.n} + static_cast<std::size_t>(side.m)] = 1;
       out.triangles.push_back(t);
       ++out.facet_classes[static_cast<std::size_t>(1 + tets_in_k)];
     }
@@ -141,15 +186,25 @@ class Classifier {
     for (std::size_t k = 0; k < slots; ++k) slot_of[first[k]] = static_cast<std::uint32_t>(k);
     out.edge_in_k.assign(slots, 0);
     out.ring_offsets.assign(slots + 1, 0);
+    // The star's cells and facet flags, read once (independent loads, see
+    // classify_facets) into a local copy that both passes use.
+    out.star.resize(cells.size());
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      StarCell& local = out.star[k];
+      local.v = rt_.vertices(cells[k]);
+      for (std::size_t a = 0; a < 4; ++a) {
+        local.facet_in_k[a] = facet_in_k_[4 * std::size_t{cells[k]} + a];
+      }
+    }
     // Pass 1: facet flags decide most edges; count the ring entries of the others.
-    for (const CellId c : cells) {
-      const int iv = rt_.index(c, v);
+    for (const StarCell& local : out.star) {
+      const int iv = local.index(v);
       for (int j = 0; j < 4; ++j) {
-        const VertexId u = rt_.vertex(c, j);
+        const VertexId u = local.v[static_cast<std::size_t>(j)];
         if (j == iv || u == kInfiniteVertex || u < v) continue;
         const std::uint32_t slot = slot_of[u];
         for (int a = 0; a < 4; ++a) {
-          if (a != iv && a != j && facet_in_k_[4 * std::size_t{c} + static_cast<std::size_t>(a)]) {
+          if (a != iv && a != j && local.facet_in_k[static_cast<std::size_t>(a)]) {
             out.edge_in_k[slot] = 1;
           }
         }
@@ -160,15 +215,17 @@ class Classifier {
     // Pass 2: the ring vertices of every edge, for the edges no coface put in K.
     out.ring.assign(out.ring_offsets[slots], kInfiniteVertex);
     out.ring_fill.assign(out.ring_offsets.begin(), out.ring_offsets.end() - 1);
-    for (const CellId c : cells) {
-      const int iv = rt_.index(c, v);
+    for (const StarCell& local : out.star) {
+      const int iv = local.index(v);
       for (int j = 0; j < 4; ++j) {
-        const VertexId u = rt_.vertex(c, j);
+        const VertexId u = local.v[static_cast<std::size_t>(j)];
         if (j == iv || u == kInfiniteVertex || u < v) continue;
         const std::uint32_t slot = slot_of[u];
         if (out.edge_in_k[slot]) continue;
         for (int a = 0; a < 4; ++a) {
-          if (a != iv && a != j) out.ring[out.ring_fill[slot]++] = rt_.vertex(c, a);
+          if (a != iv && a != j) {
+            out.ring[out.ring_fill[slot]++] = local.v[static_cast<std::size_t>(a)];
+          }
         }
       }
     }

@@ -187,12 +187,53 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples, const SeedOp
     SeedPolytope probe;
     check_options(options, probe);  // bad parameters fail before the expensive poles
   }
+  candidate_samples(options, samples.size());  // throws on a bad list, in the caller's ids
   Report scratch;
   Report& rep = report ? *report : scratch;
+  // The whole pipeline runs on the samples in Hilbert order (position i holds sample
+  // order[i]), so that every array indexed by sample is read with locality; the result is
+  // mapped back to the caller's sample ids at the end. (A non-finite coordinate keeps
+  // the caller's order: the poles stage rejects it with the sample's id.)
+  bool finite = true;
+  for (const Point3& p : samples) finite = finite && is_finite(p);
+  std::vector<std::uint32_t> order;
+  if (finite) {
+    order = triangulation::hilbert_order(samples);
+  } else {
+    order.resize(samples.size());
+    for (std::uint32_t i = 0; i < samples.size(); ++i) order[i] = i;
+  }
+  std::vector<std::uint32_t> position(samples.size());
+  std::vector<Point3> sorted(samples.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i) {
+    position[order[i]] = i;
+    sorted[i] = samples[order[i]];
+  }
+  SeedOptions sorted_options = options;
+  if (!options.candidates.empty()) {
+    for (std::uint32_t& c : sorted_options.candidates) c = position[c];
+    std::sort(sorted_options.candidates.begin(), sorted_options.candidates.end());
+  }
   poles::PoleAnalysisOptions pole_options = options.poles;
   if (pole_options.threads == 0) pole_options.threads = options.threads;
-  const poles::PoleAnalysis analysis = poles::analyse_poles(samples, pole_options, &rep);
-  return compute_seed_polytope(samples, analysis, options, &rep);
+  const poles::PoleAnalysis analysis = poles::analyse_poles(sorted, pole_options, &rep);
+  SeedPolytope out = compute_seed_polytope(sorted, analysis, sorted_options, &rep);
+
+  const auto to_caller = [&](std::vector<std::uint32_t>& ids, bool sort) {
+    for (std::uint32_t& id : ids) id = order[id];
+    if (sort) std::sort(ids.begin(), ids.end());
+  };
+  to_caller(out.kept, true);
+  to_caller(out.prune.kept, true);
+  to_caller(out.vertex_sample, false);
+  const auto unpermute = [&](auto& per_sample) {
+    auto copy = per_sample;
+    for (std::uint32_t i = 0; i < order.size(); ++i) per_sample[order[i]] = copy[i];
+  };
+  unpermute(out.sample_vertex);
+  unpermute(out.dhat);
+  unpermute(out.radius);
+  return out;
 }
 
 SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
@@ -243,11 +284,22 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
   }
 
   Report::Stage rt_stage(rep, "regular triangulation");
+  // Ball r of the triangulation is sample ball_sample[r]: the kept balls along a Hilbert
+  // curve, so that every array indexed by ball (points, stars, flags) is read with
+  // locality; in sample order these reads miss the cache once the input outgrows it.
+  std::vector<std::uint32_t> ball_sample;
+  {
+    std::vector<Point3> kept_points;
+    kept_points.reserve(out.kept.size());
+    for (std::uint32_t s : out.kept) kept_points.push_back(samples[s]);
+    ball_sample = triangulation::hilbert_order(kept_points);
+    for (std::uint32_t& b : ball_sample) b = out.kept[b];
+  }
   std::vector<Point3> centres;
   std::vector<double> weights;
-  centres.reserve(out.kept.size());
-  weights.reserve(out.kept.size());
-  for (std::uint32_t s : out.kept) {
+  centres.reserve(ball_sample.size());
+  weights.reserve(ball_sample.size());
+  for (std::uint32_t s : ball_sample) {
     centres.push_back(samples[s]);
     weights.push_back(surface[s].r * surface[s].r);
   }
@@ -283,10 +335,10 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
   homology_stage.finish();
 
   // Output vertices: the kept balls that are vertices of the collapsed complex.
-  std::vector<std::uint32_t> output_vertex_of_ball(out.kept.size(), kNone);
+  std::vector<std::uint32_t> output_vertex_of_ball(ball_sample.size(), kNone);
   for (complex::VertexId v : result.vertices()) {
     output_vertex_of_ball[v] = static_cast<std::uint32_t>(out.vertex_sample.size());
-    out.vertex_sample.push_back(out.kept[v]);
+    out.vertex_sample.push_back(ball_sample[v]);
   }
   std::vector<complex::Triangle> oriented;
   bool orientable = false;
@@ -312,7 +364,7 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
 
   Report::Stage map_stage(rep, "sample map");
   std::vector<std::uint32_t> ball_of_sample(samples.size(), kNone);
-  for (std::uint32_t b = 0; b < out.kept.size(); ++b) ball_of_sample[out.kept[b]] = b;
+  for (std::uint32_t b = 0; b < ball_sample.size(); ++b) ball_of_sample[ball_sample[b]] = b;
   map_samples(samples, rt, stars, ball_of_sample, output_vertex_of_ball, options.threads, out);
   map_stage.finish();
   return out;
