@@ -42,6 +42,8 @@ class SeedCommand : public Command {
     app.add_flag("--strict", options_.require_clean_labels,
                  "Fail if the pole labeling is not clean");
     app.add_flag("--ascii", outputs_.ascii, "ASCII PLY output");
+    app.add_option("--threads", options_.threads, "Threads (0: all cores)")
+        ->capture_default_str();
   }
 
   int run(Context& context) override {

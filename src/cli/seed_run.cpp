@@ -1,5 +1,6 @@
 #include "cli/seed_run.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -17,14 +18,35 @@ std::string betti_text(const complex::BettiNumbers& b) {
   return s.str();
 }
 
-double stage_sum(const Report& report, std::initializer_list<const char*> names) {
-  double sum = 0;
-  for (const auto& [name, seconds] : report.stages()) {
+/// Wall and CPU seconds of the named stages.
+struct Seconds {
+  double wall = 0;
+  double cpu = 0;
+  Seconds& operator+=(const Seconds& o) {
+    wall += o.wall;
+    cpu += o.cpu;
+    return *this;
+  }
+};
+
+Seconds stage_sum(const Report& report, std::initializer_list<const char*> names) {
+  Seconds sum;
+  for (std::size_t i = 0; i < report.stages().size(); ++i) {
     for (const char* n : names) {
-      if (name == n) sum += seconds;
+      if (report.stages()[i].first == n) {
+        sum.wall += report.stages()[i].second;
+        sum.cpu += std::max(0.0, report.stage_cpu_seconds()[i]);
+      }
     }
   }
   return sum;
+}
+
+void print_row(const char* name, const Seconds& s, const std::string& tail = "") {
+  char line[256];
+  std::snprintf(line, sizeof line, "  %-28s %8.3f s %8.3f s cpu%s\n", name, s.wall, s.cpu,
+                tail.c_str());
+  std::cerr << line;
 }
 
 void write_outputs(const std::vector<Point3>& samples, const pipeline::SeedPolytope& seed,
@@ -69,8 +91,11 @@ void write_outputs(const std::vector<Point3>& samples, const pipeline::SeedPolyt
 pipeline::SeedPolytope run_seed(const std::vector<Point3>& samples,
                                 const pipeline::SeedOptions& options,
                                 const SeedOutputs& outputs, Context& context, Report& report,
-                                const std::string& title) {
-  pipeline::SeedPolytope seed = pipeline::compute_seed_polytope(samples, options, &report);
+                                const std::string& title, const poles::PoleAnalysis* shared,
+                                const Report* shared_report) {
+  pipeline::SeedPolytope seed =
+      shared != nullptr ? pipeline::compute_seed_polytope(samples, *shared, options, &report)
+                        : pipeline::compute_seed_polytope(samples, options, &report);
   for (const std::string& w : seed.warnings) context.warn(w);
   {
     Report::Stage stage(report, "output");
@@ -79,7 +104,10 @@ pipeline::SeedPolytope run_seed(const std::vector<Point3>& samples,
 
   auto& d = report.data();
   d["parameters"] = {{"rho", options.rho}, {"rho_tilde", options.rho_tilde},
-                     {"cover_time_limit", options.prune.time_limit}};
+                     {"cover_time_limit", options.prune.time_limit},
+                     {"candidates", options.candidates.empty() ? samples.size()
+                                                               : options.candidates.size()},
+                     {"shared_poles", shared != nullptr}};
   d["samples"] = samples.size();
   d["kept_balls"] = seed.kept.size();
   d["hidden_balls"] = seed.hidden_balls;
@@ -102,36 +130,38 @@ pipeline::SeedPolytope run_seed(const std::vector<Point3>& samples,
   d["guarantee_holds"] = seed.warnings.empty();
 
   if (!context.quiet) {
-    const double dp = stage_sum(report, {"delaunay", "poles", "labels", "pole distance"});
-    const double sb = stage_sum(report, {"surface balls"});
-    const double pr = stage_sum(report, {"covering sets", "set cover"});
-    const double al = stage_sum(report, {"regular triangulation", "dual complex", "collapse",
-                                         "homology"});
-    const double out = stage_sum(report, {"sample map", "output"});
+    const std::initializer_list<const char*> pole_stages = {"delaunay", "poles", "labels",
+                                                            "pole distance"};
+    const Seconds dp = stage_sum(shared_report != nullptr ? *shared_report : report,
+                                 pole_stages);
+    const Seconds sb = stage_sum(report, {"surface balls"});
+    const Seconds pr = stage_sum(report, {"covering sets", "set cover"});
+    const Seconds al = stage_sum(report, {"regular triangulation", "vertex stars",
+                                          "dual complex", "collapse", "homology"});
+    const Seconds out = stage_sum(report, {"sample map", "output"});
     char line[256];
     std::cerr << title << "\n";
-    std::snprintf(line, sizeof line, "  %-28s %8.3f s\n", "Delaunay + poles", dp);
-    std::cerr << line;
-    std::snprintf(line, sizeof line, "  %-28s %8.3f s\n", "surface balls", sb);
-    std::cerr << line;
+    print_row(shared != nullptr ? "Delaunay + poles (shared)" : "Delaunay + poles", dp);
+    print_row("surface balls", sb);
     if (seed.pruned) {
-      std::snprintf(line, sizeof line,
-                    "  %-28s %8.3f s   cover %.0f balls, certified bound %.2f, gap %.2f%%\n",
-                    "pruning (set cover)", pr, seed.prune.cost, seed.prune.lower_bound,
-                    100 * seed.prune.gap);
+      std::snprintf(line, sizeof line, "   cover %.0f balls, certified bound %.2f, gap %.2f%%",
+                    seed.prune.cost, seed.prune.lower_bound, 100 * seed.prune.gap);
+      print_row("pruning (set cover)", pr, line);
     } else {
       std::snprintf(line, sizeof line, "  %-28s %8s     (rho~ = 0: every ball kept)\n",
                     "pruning (set cover)", "-");
+      std::cerr << line;
     }
-    std::cerr << line;
     std::snprintf(line, sizeof line, "  %-28s %8zu\n", "# remaining balls", seed.kept.size());
     std::cerr << line;
-    std::snprintf(line, sizeof line, "  %-28s %8.3f s\n", "weighted alpha-shape", al);
-    std::cerr << line;
-    std::snprintf(line, sizeof line, "  %-28s %8.3f s\n", "output + sample map", out);
-    std::cerr << line;
-    std::snprintf(line, sizeof line, "  %-28s %8.3f s\n", "total", dp + sb + pr + al + out);
-    std::cerr << line;
+    print_row("weighted alpha-shape", al);
+    print_row("output + sample map", out);
+    Seconds level = sb;
+    level += pr;
+    level += al;
+    level += out;
+    print_row(shared != nullptr ? "level total (poles shared)" : "total",
+              shared != nullptr ? level : (level += dp));
     std::cerr << "  dual complex K: " << seed.k_counts[0] << " vertices, " << seed.k_counts[1]
               << " edges, " << seed.k_counts[2] << " triangles, " << seed.k_counts[3]
               << " tetrahedra; Betti " << betti_text(seed.betti_k) << "\n";

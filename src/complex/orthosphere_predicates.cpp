@@ -191,6 +191,44 @@ Sign orthosphere_attachment_sign(std::span<const WeightedPoint> sigma, const Wei
   return orthosphere_attachment_sign_exact(sigma, p);
 }
 
+bool orthosphere_is_unattached_in_union(std::span<const WeightedPoint> sigma,
+                                        std::span<const WeightedPoint> opposite) {
+  check_size(sigma, 3);
+  if (sigma.size() == 1) {
+    if (orthosphere_power_sign(sigma) == Sign::positive) return false;
+    for (const WeightedPoint& p : opposite) {
+      if (orthosphere_attachment_sign(sigma, p) == Sign::negative) return false;
+    }
+    return true;
+  }
+  const OrthoSystem<FilteredNumber> s(sigma);
+  const bool independent = s.degeneracy().certified_sign() == 1;
+  std::uint64_t filtered = 0;
+  std::uint64_t exact = 0;
+  bool result = true;
+  int power = independent ? s.power().certified_sign() : 2;
+  if (power == 2) {
+    ++exact;
+    power = static_cast<int>(orthosphere_power_sign_exact(sigma));
+  } else {
+    ++filtered;
+  }
+  if (power == 1) result = false;
+  for (std::size_t k = 0; result && k < opposite.size(); ++k) {
+    int sign = independent ? s.attachment(opposite[k]).certified_sign() : 2;
+    if (sign == 2) {
+      ++exact;
+      sign = static_cast<int>(orthosphere_attachment_sign_exact(sigma, opposite[k]));
+    } else {
+      ++filtered;
+    }
+    if (sign == -1) result = false;
+  }
+  g_filtered.fetch_add(filtered, std::memory_order_relaxed);
+  if (exact != 0) g_exact.fetch_add(exact, std::memory_order_relaxed);
+  return result;
+}
+
 OrthospherePredicateCounters orthosphere_predicate_counters() {
   return {g_filtered.load(std::memory_order_relaxed), g_exact.load(std::memory_order_relaxed)};
 }

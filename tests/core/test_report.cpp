@@ -33,3 +33,21 @@ TEST_CASE("report JSON carries data, stages, warnings and memory") {
   report.print_stages(out);
   CHECK(out.str().find("total") != std::string::npos);
 }
+
+TEST_CASE("stages record the CPU seconds of the process") {
+  rstruct::Report report;
+  {
+    rstruct::Report::Stage busy(report, "busy");
+    volatile double x = 0;
+    const rstruct::Stopwatch clock;
+    while (clock.cpu_seconds() < 0.02) x = x + 1;
+  }
+  report.add_stage("unmeasured", 0.1);
+  REQUIRE(report.stage_cpu_seconds().size() == 2);
+  CHECK(report.stage_cpu_seconds()[0] >= 0.02);
+  CHECK(report.stage_cpu_seconds()[1] < 0);
+  const auto j = report.to_json();
+  CHECK(j["stages"][0]["cpu_seconds"].get<double>() >= 0.02);
+  CHECK_FALSE(j["stages"][1].contains("cpu_seconds"));
+  CHECK(j["total_cpu_seconds"].get<double>() >= 0.02);
+}

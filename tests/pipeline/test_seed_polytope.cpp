@@ -5,10 +5,13 @@
 
 #include "rstruct/pipeline/seed_polytope.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <set>
 
 #include "rstruct/core/error.hpp"
+#include "rstruct/poles/pole_analysis.hpp"
+#include "rstruct/predicates/predicates.hpp"
 #include "rstruct/sampling/sample_request.hpp"
 
 using rstruct::pipeline::SeedOptions;
@@ -109,4 +112,99 @@ TEST_CASE("absurd parameters are rejected, unguaranteed ones are warned about") 
   options.rho_tilde = 0.05;
   const SeedPolytope seed = rstruct::pipeline::compute_seed_polytope(samples, options);
   CHECK(seed.warnings.size() == 2);
+}
+
+TEST_CASE("levels share one pole analysis; results do not depend on it or on threads") {
+  const auto samples = certified_sample("torus", 0.15, 5, true);
+  // Unpruned, so that nothing depends on the set-cover solver's time limit.
+  SeedOptions options;
+  options.rho = 0.4;
+  options.rho_tilde = 0;
+  options.threads = 1;
+  const SeedPolytope alone = rstruct::pipeline::compute_seed_polytope(samples, options);
+  const rstruct::poles::PoleAnalysis analysis = rstruct::poles::analyse_poles(samples);
+  options.threads = 3;
+  const SeedPolytope shared =
+      rstruct::pipeline::compute_seed_polytope(samples, analysis, options);
+  CHECK(shared.kept == alone.kept);
+  CHECK(shared.vertex_sample == alone.vertex_sample);
+  CHECK(shared.triangles == alone.triangles);
+  CHECK(shared.sample_vertex == alone.sample_vertex);
+  CHECK(shared.k_counts == alone.k_counts);
+  CHECK(shared.facet_classes == alone.facet_classes);
+  CHECK(shared.betti_output == rstruct::complex::BettiNumbers{{1, 2, 1, 0}});
+
+  options.rho_tilde = 0.03;
+  options.prune.time_limit = 0.2;
+  const SeedPolytope pruned =
+      rstruct::pipeline::compute_seed_polytope(samples, analysis, options);
+  CHECK(pruned.betti_output == rstruct::complex::BettiNumbers{{1, 2, 1, 0}});
+
+  // Nested level: prune among the balls just kept with a larger shrink factor.
+  SeedOptions coarse = options;
+  coarse.rho = 0.56;
+  coarse.rho_tilde = 0.06;
+  coarse.candidates = pruned.kept;
+  const SeedPolytope nested =
+      rstruct::pipeline::compute_seed_polytope(samples, analysis, coarse);
+  CHECK(nested.kept.size() <= pruned.kept.size());
+  CHECK(std::includes(pruned.kept.begin(), pruned.kept.end(), nested.kept.begin(),
+                      nested.kept.end()));
+  CHECK(nested.betti_output == rstruct::complex::BettiNumbers{{1, 2, 1, 0}});
+  check_structure(samples, nested);
+
+  // Unpruned level restricted to candidates keeps exactly them.
+  SeedOptions unpruned = options;
+  unpruned.rho_tilde = 0;
+  unpruned.candidates = pruned.kept;
+  CHECK(rstruct::pipeline::compute_seed_polytope(samples, analysis, unpruned).kept ==
+        pruned.kept);
+
+  // Bad candidate lists and analyses of other samples are rejected.
+  SeedOptions bad = options;
+  bad.candidates = {3, 2};
+  CHECK_THROWS_AS(rstruct::pipeline::compute_seed_polytope(samples, analysis, bad),
+                  rstruct::InvalidInput);
+  bad.candidates = {static_cast<std::uint32_t>(samples.size())};
+  CHECK_THROWS_AS(rstruct::pipeline::compute_seed_polytope(samples, analysis, bad),
+                  rstruct::InvalidInput);
+  const std::vector<rstruct::Point3> fewer(samples.begin(), samples.end() - 1);
+  CHECK_THROWS_AS(rstruct::pipeline::compute_seed_polytope(fewer, analysis, options),
+                  rstruct::InvalidInput);
+}
+
+TEST_CASE("every sample maps to the output vertex of smallest power distance") {
+  // Brute-force oracle with exact comparisons: a sample goes to a kept ball of smallest
+  // power distance if that ball is an output vertex, else to an output vertex of smallest
+  // power distance among the output vertices' balls.
+  const auto samples = certified_sample("sphere", 0.12, 11, false);
+  SeedOptions options;
+  options.rho = 0.5;
+  options.rho_tilde = 0.03;
+  options.prune.time_limit = 0.2;
+  const SeedPolytope seed = rstruct::pipeline::compute_seed_polytope(samples, options);
+  REQUIRE(seed.sample_vertex.size() == samples.size());
+  const auto ball = [&](std::uint32_t s) {
+    return rstruct::WeightedPoint{samples[s], seed.radius[s] * seed.radius[s]};
+  };
+  const auto nearest = [&](const rstruct::Point3& q, const std::vector<std::uint32_t>& among) {
+    std::uint32_t best = among.front();
+    for (const std::uint32_t k : among) {
+      if (rstruct::predicates::compare_power_distance(q, ball(k), ball(best)) ==
+          rstruct::Sign::negative) {
+        best = k;
+      }
+    }
+    return best;
+  };
+  const std::set<std::uint32_t> outputs(seed.vertex_sample.begin(), seed.vertex_sample.end());
+  for (std::size_t s = 0; s < samples.size(); ++s) {
+    const std::uint32_t mine = seed.vertex_sample[seed.sample_vertex[s]];
+    const std::uint32_t best = nearest(samples[s], seed.kept);
+    const std::uint32_t expected =
+        outputs.count(best) != 0 ? best : nearest(samples[s], seed.vertex_sample);
+    INFO("sample " << s);
+    REQUIRE(rstruct::predicates::compare_power_distance(samples[s], ball(mine),
+                                                        ball(expected)) == rstruct::Sign::zero);
+  }
 }

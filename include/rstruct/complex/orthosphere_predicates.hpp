@@ -41,6 +41,16 @@ Sign orthosphere_power_sign(std::span<const WeightedPoint> sigma);
 /// \throws InvalidInput if the points of sigma are affinely dependent.
 Sign orthosphere_attachment_sign(std::span<const WeightedPoint> sigma, const WeightedPoint& p);
 
+/// The lower-simplex rule of the dual complex when no coface of σ is in K: true iff
+/// orthosphere_power_sign(sigma) is not positive and orthosphere_attachment_sign(sigma, p)
+/// is not negative for every p in `opposite` (σ unattached, its orthocentre in the union).
+/// The same decisions as those calls, sharing one filtered evaluation of σ's system;
+/// every sign the filter cannot certify goes to the exact stage.
+/// \pre 1 ≤ sigma.size() ≤ 3, points affinely independent.
+/// \throws InvalidInput if the points of sigma are affinely dependent.
+bool orthosphere_is_unattached_in_union(std::span<const WeightedPoint> sigma,
+                                        std::span<const WeightedPoint> opposite);
+
 /// The same signs from exact rational arithmetic only (no filter): the oracle of the
 /// filter tests.
 Sign orthosphere_power_sign_exact(std::span<const WeightedPoint> sigma);

@@ -39,9 +39,12 @@ class Report {
   nlohmann::json& data() { return data_; }
   const nlohmann::json& data() const { return data_; }
 
-  /// Records a finished stage (name, seconds) in order of completion.
-  void add_stage(std::string name, double seconds);
+  /// Records a finished stage (name, wall seconds, CPU seconds of every thread; negative:
+  /// not measured) in order of completion.
+  void add_stage(std::string name, double seconds, double cpu_seconds = -1);
   const std::vector<std::pair<std::string, double>>& stages() const { return stages_; }
+  /// CPU seconds of stage i of stages() (user + system, all threads), −1 if not measured.
+  const std::vector<double>& stage_cpu_seconds() const { return stage_cpu_; }
 
   /// Adds a warning (also kept in the JSON under "warnings").
   void warn(const std::string& message);
@@ -53,12 +56,13 @@ class Report {
   /// Writes to_json() atomically. \throws IoError.
   void write(const std::filesystem::path& path) const;
 
-  /// Prints the stage table ("stage  seconds") to `out`.
+  /// Prints the stage table ("stage  seconds  cpu seconds") to `out`.
   void print_stages(std::ostream& out) const;
 
  private:
   nlohmann::json data_ = nlohmann::json::object();
   std::vector<std::pair<std::string, double>> stages_;
+  std::vector<double> stage_cpu_;
   std::vector<std::string> warnings_;
   Stopwatch total_;
 };

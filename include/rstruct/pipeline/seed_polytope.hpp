@@ -16,9 +16,16 @@
 ///  6. Sample map: each sample goes to the kept ball whose power cell contains it; if that
 ///     ball is not a vertex of the output (its vertex was collapsed away), to the output
 ///     vertex whose power cell among the output vertices' balls contains it (counted in
-///     `remapped_samples`). Both decisions are exact power comparisons.
+///     `remapped_samples`). Both decisions are exact power comparisons, found by a
+///     downhill walk in power distance over the triangulation's edges (a power cell is
+///     cut out by its neighbours alone, so a vertex with no neighbour of smaller power
+///     distance owns the sample), started from the sample's own ball when it is a vertex
+///     and otherwise from the answer of the previous sample along a Hilbert curve.
 ///
-/// With smaller ρ and ρ̃ the same pipeline is the paper's scalable reconstruction.
+/// With smaller ρ and ρ̃ the same pipeline is the paper's scalable reconstruction. Levels
+/// of detail on the same samples share step 1: compute a PoleAnalysis once and call the
+/// overload that takes it; a coarser level may restrict its pruning candidates to the
+/// balls kept by a finer one (SeedOptions::candidates).
 
 #include <array>
 #include <cstdint>
@@ -47,6 +54,13 @@ struct SeedOptions {
   /// poles): D̂ uses poles of both labels, so labels do not enter the seed polytope, but
   /// a dirty labeling means the input is probably not an r-sample of a closed surface.
   bool require_clean_labels = false;
+  /// Samples whose balls may be kept (strictly increasing sample ids); empty: every
+  /// sample. Pruning (ρ̃ > 0) chooses among these; ρ̃ = 0 keeps all of them. Every sample
+  /// must still be covered by some candidate's shrunk ball, which holds for the balls kept
+  /// by a pruning with a smaller ρ̃ (nested levels of detail).
+  std::vector<std::uint32_t> candidates;
+  /// Threads for the parallel stages (0: hardware concurrency). Results do not depend on it.
+  unsigned threads = 0;
 };
 
 struct SeedPolytope {
@@ -77,13 +91,23 @@ struct SeedPolytope {
   std::vector<std::string> warnings;           ///< parameter guards, labeling problems
 };
 
-/// Runs the pipeline. Stage seconds go to `report` (Table 1 breakdown: "delaunay",
-/// "poles", "labels", "pole distance", "surface balls", "covering sets", "set cover",
-/// "regular triangulation", "dual complex", "collapse", "sample map", "homology").
-/// \throws InvalidInput for bad parameters (NaN, negative, ρ̃ ≥ ρ, ρ > 1) or inputs that
-/// the poles stage rejects; ComputationFailed if require_clean_labels and the labeling is
-/// not clean.
+/// Runs the pipeline. Stage seconds (wall and CPU) go to `report` (Table 1 breakdown:
+/// "delaunay", "poles", "labels", "pole distance", "surface balls", "covering sets",
+/// "set cover", "regular triangulation", "vertex stars", "dual complex", "collapse",
+/// "homology", "sample map").
+/// \throws InvalidInput for bad parameters (NaN, negative, ρ̃ ≥ ρ, ρ > 1, candidates out of
+/// range or not increasing) or inputs that the poles stage rejects; ComputationFailed if
+/// require_clean_labels and the labeling is not clean, or if some sample is covered by no
+/// candidate's shrunk ball.
 SeedPolytope compute_seed_polytope(std::span<const Point3> samples, const SeedOptions& options,
                                    Report* report = nullptr);
+
+/// The same from a PoleAnalysis of `samples` computed beforehand (options.poles is then
+/// not used): levels of detail share the Delaunay triangulation, poles and D̂.
+/// \pre `analysis` = poles::analyse_poles(samples, ...).
+/// \throws as above; InvalidInput if the analysis has a different number of samples.
+SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
+                                   const poles::PoleAnalysis& analysis,
+                                   const SeedOptions& options, Report* report = nullptr);
 
 }  // namespace rstruct::pipeline

@@ -1,0 +1,206 @@
+// Benchmark of issue 7's speed targets: the seed pipeline at several levels of detail on
+// one input, the pole analysis shared by the levels (as `rstruct demo` runs it). Default
+// input: the demo's double torus (85,237 samples, seed 1), levels as the demo's
+// (0.5:0, 0.56:0.15 nested, 0.8:0.5 nested). --torus N: a torus (R/a = 3) with N
+// samples instead (the 10⁶-sample target: --torus 1000000 --levels 0.5:0).
+// Prints, per level, every stage's median wall and CPU seconds over --runs, the level's
+// total, and a checksum (kept balls, output vertices, triangles, Betti numbers, manifold).
+//
+//   bench_seed [--runs 3] [--torus N] [--levels RHO:SHRINK,...] [--cover-time 0.3]
+//              [--threads 0] [--no-nested] [--random-order]
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "rstruct/core/report.hpp"
+#include "rstruct/pipeline/seed_polytope.hpp"
+#include "rstruct/poles/pole_analysis.hpp"
+#include "rstruct/sampling/sample_request.hpp"
+#include "rstruct/triangulation/spatial_sort.hpp"
+
+namespace {
+
+using rstruct::Point3;
+using rstruct::Report;
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t k = v.size() / 2;
+  return v.size() % 2 == 1 ? v[k] : 0.5 * (v[k - 1] + v[k]);
+}
+
+struct Level {
+  double rho = 0.5;
+  double shrink = 0;
+};
+
+std::vector<Level> parse_levels(const std::string& text) {
+  std::vector<Level> levels;
+  std::istringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    Level l;
+    if (std::sscanf(item.c_str(), "%lf:%lf", &l.rho, &l.shrink) != 2) {
+      std::fprintf(stderr, "bad level '%s'\n", item.c_str());
+      std::exit(2);
+    }
+    levels.push_back(l);
+  }
+  return levels;
+}
+
+/// Stage → wall and CPU seconds of every run, in order of first appearance.
+struct StageTimes {
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<double>> wall;
+  std::map<std::string, std::vector<double>> cpu;
+  std::vector<double> total_wall;
+  std::vector<double> total_cpu;
+
+  void add(const Report& report) {
+    double w = 0;
+    double c = 0;
+    for (std::size_t i = 0; i < report.stages().size(); ++i) {
+      const std::string& name = report.stages()[i].first;
+      if (!wall.count(name)) order.push_back(name);
+      wall[name].push_back(report.stages()[i].second);
+      cpu[name].push_back(report.stage_cpu_seconds()[i]);
+      w += report.stages()[i].second;
+      c += report.stage_cpu_seconds()[i];
+    }
+    total_wall.push_back(w);
+    total_cpu.push_back(c);
+  }
+
+  void print(const char* title) const {
+    std::printf("%s\n", title);
+    for (const std::string& name : order) {
+      std::printf("  %-24s %9.3f s %9.3f s cpu\n", name.c_str(), median(wall.at(name)),
+                  median(cpu.at(name)));
+    }
+    std::printf("  %-24s %9.3f s %9.3f s cpu\n", "total", median(total_wall),
+                median(total_cpu));
+  }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int runs = 3;
+  std::size_t torus = 0;
+  std::string levels_text = "0.5:0,0.56:0.15,0.8:0.5";
+  double cover_time = 0.3;
+  unsigned threads = 0;
+  bool nested = true;
+  bool random_order = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    const auto next = [&]() -> const char* {
+      if (i + 1 >= argc) {
+        std::fprintf(stderr, "%s needs a value\n", a.c_str());
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if (a == "--runs") {
+      runs = std::atoi(next());
+    } else if (a == "--torus") {
+      torus = std::strtoull(next(), nullptr, 10);
+    } else if (a == "--levels") {
+      levels_text = next();
+    } else if (a == "--cover-time") {
+      cover_time = std::atof(next());
+    } else if (a == "--threads") {
+      threads = static_cast<unsigned>(std::atoi(next()));
+    } else if (a == "--no-nested") {
+      nested = false;
+    } else if (a == "--random-order") {
+      random_order = true;
+    } else {
+      std::fprintf(stderr,
+                   "usage: bench_seed [--runs 3] [--torus N] [--levels RHO:SHRINK,...] "
+                   "[--cover-time 0.3] [--threads 0] [--no-nested] [--random-order]\n");
+      return a == "--help" ? 0 : 2;
+    }
+  }
+  const std::vector<Level> levels = parse_levels(levels_text);
+
+  rstruct::sampling::SampleRequest request;
+  request.shape = torus > 0 ? "torus" : "double-torus";
+  request.n = torus > 0 ? torus : 85237;
+  request.seed = 1;
+  const std::vector<Point3> generated = rstruct::sampling::generate_sample(request).points;
+  // As `rstruct demo` (and compute_seed_polytope without a PoleAnalysis) do: samples along
+  // a Hilbert curve, for locality. --random-order keeps the sampler's order.
+  std::vector<Point3> samples;
+  if (random_order) {
+    samples = generated;
+  } else {
+    for (const std::uint32_t i : rstruct::triangulation::hilbert_order(generated)) {
+      samples.push_back(generated[i]);
+    }
+  }
+  std::printf("input: %s, %zu samples (%s order); levels %s; %d runs; cover time %.2f s\n",
+              request.shape.c_str(), samples.size(), random_order ? "sampler" : "Hilbert",
+              levels_text.c_str(), runs, cover_time);
+
+  StageTimes poles;
+  std::vector<StageTimes> level_times(levels.size());
+  std::vector<std::string> checksums(levels.size());
+  for (int run = 0; run < runs; ++run) {
+    Report pole_report;
+    rstruct::poles::PoleAnalysisOptions pole_options;
+    pole_options.threads = threads;
+    const rstruct::poles::PoleAnalysis analysis =
+        rstruct::poles::analyse_poles(samples, pole_options, &pole_report);
+    poles.add(pole_report);
+    std::vector<std::uint32_t> previous_kept;
+    double previous_shrink = -1;
+    for (std::size_t l = 0; l < levels.size(); ++l) {
+      rstruct::pipeline::SeedOptions options;
+      options.rho = levels[l].rho;
+      options.rho_tilde = levels[l].shrink;
+      options.prune.time_limit = cover_time;
+      options.threads = threads;
+      if (nested && options.rho_tilde > 0 && options.rho_tilde >= previous_shrink) {
+        options.candidates = previous_kept;
+      }
+      Report report;
+      const auto seed =
+          rstruct::pipeline::compute_seed_polytope(samples, analysis, options, &report);
+      level_times[l].add(report);
+      previous_kept = seed.kept.size() == samples.size() ? std::vector<std::uint32_t>{}
+                                                         : seed.kept;
+      previous_shrink = options.rho_tilde;
+      char line[256];
+      std::snprintf(line, sizeof line,
+                    "kept %zu, output %zu vertices (%.2f%%), %zu triangles, Betti (%lld, %lld, "
+                    "%lld), %s, remapped %zu",
+                    seed.kept.size(), seed.vertex_sample.size(),
+                    100.0 * static_cast<double>(seed.vertex_sample.size()) /
+                        static_cast<double>(samples.size()),
+                    seed.triangles.size(), seed.betti_output[0], seed.betti_output[1],
+                    seed.betti_output[2],
+                    seed.manifold.is_closed_2_manifold ? "closed 2-manifold" : "NOT a manifold",
+                    seed.remapped_samples);
+      checksums[l] = line;
+      std::fprintf(stderr, "run %d level %zu: %.3f s cpu; %s\n", run + 1, l + 1,
+                   level_times[l].total_cpu.back(), line);
+    }
+  }
+  poles.print("shared: Delaunay + poles + labels + D^");
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    char title[128];
+    std::snprintf(title, sizeof title, "level %zu (rho %.2f, shrink %.2f): %s", l + 1,
+                  levels[l].rho, levels[l].shrink, checksums[l].c_str());
+    level_times[l].print(title);
+  }
+  return 0;
+}

@@ -1,0 +1,309 @@
+#include "rstruct/complex/triangulation_dual_complex.hpp"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "rstruct/complex/orthosphere_predicates.hpp"
+#include "rstruct/core/assert.hpp"
+#include "rstruct/core/parallel.hpp"
+
+namespace rstruct::complex {
+namespace {
+
+using triangulation::CellId;
+using triangulation::kInfiniteVertex;
+using triangulation::RegularTriangulation3;
+using triangulation::VertexStars;
+
+constexpr std::size_t kChunk = 2048;
+
+/// A cell of a vertex's star, copied: its vertices and which of its facets are in K.
+struct StarCell {
+  std::array<VertexId, 4> v{};
+  std::array<std::uint8_t, 4> facet_in_k{};
+  int index(VertexId x) const {
+    for (int i = 0; i < 4; ++i) {
+      if (v[static_cast<std::size_t>(i)] == x) return i;
+    }
+    return -1;
+  }
+};
+
+/// What one worker found: simplices of K and counts of the triangulation.
+struct WorkerLists {
+  std::vector<Tetrahedron> tetrahedra;
+  std::vector<Triangle> triangles;
+  std::vector<Edge> edges;
+  std::vector<VertexId> vertices;
+  std::array<std::size_t, 4> finite{};
+  std::array<std::size_t, 4> facet_classes{};
+  // Scratch of classify_edges and classify_vertex.
+  std::vector<StarCell> star;             // the current vertex's star
+  std::vector<std::uint32_t> slot_of;     // vertex id → slot of an edge of the current vertex
+  std::vector<std::uint8_t> edge_in_k;    // per slot
+  std::vector<std::size_t> ring_offsets;  // per slot: its ring entries
+  std::vector<std::size_t> ring_fill;
+  std::vector<VertexId> ring;             // vertices opposite the edges (with repeats)
+  std::vector<WeightedPoint> opposite;    // weighted points of one edge's ring
+};
+
+class Classifier {
+ public:
+  Classifier(const RegularTriangulation3& rt, const VertexStars& stars, unsigned threads)
+      : rt_(rt), stars_(stars), threads_(threads) {
+    const std::size_t cap = rt.cell_capacity();
+    workers_ = std::max(thread_count(threads, cap, kChunk),
+                        thread_count(threads, rt.number_of_points(), kChunk));
+    lists_.resize(workers_);
+    cell_in_k_.assign(cap, 0);
+    facet_in_k_.assign(4 * cap, 0);
+    vertex_has_edge_.assign(rt.number_of_points(), 0);
+  }
+
+  TriangulationDualComplex run() {
+    const std::size_t cap = rt_.cell_capacity();
+    const std::size_t n = rt_.number_of_points();
+    parallel_chunks(cap, threads_, kChunk, [&](std::size_t b, std::size_t e, unsigned w) {
+      for (std::size_t c = b; c < e; ++c) classify_cell(static_cast<CellId>(c), lists_[w]);
+    });
+    parallel_chunks(cap, threads_, kChunk, [&](std::size_t b, std::size_t e, unsigned w) {
+      classify_facets(b, e, lists_[w]);
+    });
+    parallel_chunks(n, threads_, kChunk, [&](std::size_t b, std::size_t e, unsigned w) {
+      for (std::size_t v = b; v < e; ++v) classify_edges(static_cast<VertexId>(v), lists_[w]);
+    });
+    for (const WorkerLists& l : lists_) {
+      for (const Edge& edge : l.edges) vertex_has_edge_[edge[0]] = vertex_has_edge_[edge[1]] = 1;
+    }
+    parallel_chunks(n, threads_, kChunk, [&](std::size_t b, std::size_t e, unsigned w) {
+      for (std::size_t v = b; v < e; ++v) classify_vertex(static_cast<VertexId>(v), lists_[w]);
+    });
+    return assemble();
+  }
+
+ private:
+  WeightedPoint point(VertexId v) const { return rt_.weighted_point(v); }
+
+  bool is_finite_cell(CellId c) const {
+    for (int i = 0; i < 4; ++i) {
+      if (rt_.vertex(c, i) == kInfiniteVertex) return false;
+    }
+    return true;
+  }
+
+  void classify_cell(CellId c, WorkerLists& out) {
+    if (!rt_.is_cell(c) || !is_finite_cell(c)) return;
+    const auto v = rt_.vertices(c);
+    ++out.finite[3];
+    const std::array<WeightedPoint, 4> sigma{point(v[0]), point(v[1]), point(v[2]), point(v[3])};
+    if (orthosphere_power_sign(sigma) != Sign::positive) {
+      cell_in_k_[c] = 1;
+      out.tetrahedra.push_back(v);
+    }
+  }
+
+  /// The facets of the cells [b, e), each from the cell with the smaller id; the flag is
+  /// written on both sides (no other worker writes either byte). The neighbours' data are
+  /// read for a block of cells first: neighbours are scattered in memory, and independent
+  /// loads let the processor wait for several of them at once.
+  void classify_facets(std::size_t b, std::size_t e, WorkerLists& out) {
+    constexpr std::size_t kBlock = 16;
+    struct Side {
+      CellId n = 0;
+      int m = 0;
+      VertexId opposite = kInfiniteVertex;
+      int n_in_k = 0;
+    };
+    std::array<std::array<Side, 4>, kBlock> sides;
+    for (std::size_t start = b; start < e; start += kBlock) {
+      const std::size_t end = std::min(e, start + kBlock);
+      for (std::size_t c = start; c < end; ++c) {
+        if (!rt_.is_cell(static_cast<CellId>(c))) continue;
+        for (int i = 0; i < 4; ++i) {
+          Side& side = sides[c - start][static_cast<std::size_t>(i)];
+          side.n = rt_.neighbor(static_cast<CellId>(c), i);
+          if (side.n < c) continue;
+          side.m = rt_.mirror_index(static_cast<CellId>(c), i);
+          side.opposite = rt_.vertex(side.n, side.m);
+          side.n_in_k = cell_in_k_[side.n];
+        }
+      }
+      for (std::size_t c = start; c < end; ++c) {
+        if (rt_.is_cell(static_cast<CellId>(c))) {
+          classify_facets_of(static_cast<CellId>(c), sides[c - start], out);
+        }
+      }
+    }
+  }
+
+  template <class Sides>
+  void classify_facets_of(CellId c, const Sides& sides, WorkerLists& out) {
+    const auto v = rt_.vertices(c);
+    for (int i = 0; i < 4; ++i) {
+      const auto& side = sides[static_cast<std::size_t>(i)];
+      if (side.n < c) continue;
+      Triangle t{};
+      bool finite = true;
+      for (int j = 0, o = 0; j < 4; ++j) {
+        if (j == i) continue;
+        t[o++] = v[static_cast<std::size_t>(j)];
+        finite = finite && v[static_cast<std::size_t>(j)] != kInfiniteVertex;
+      }
+      if (!finite) continue;
+      ++out.finite[2];
+      const int tets_in_k = cell_in_k_[c] + side.n_in_k;
+      bool in_k = tets_in_k > 0;
+      if (!in_k) {
+        const std::array<WeightedPoint, 3> sigma{point(t[0]), point(t[1]), point(t[2])};
+        std::array<WeightedPoint, 2> opposite;
+        std::size_t count = 0;
+        for (const VertexId p : {v[static_cast<std::size_t>(i)], side.opposite}) {
+          if (p != kInfiniteVertex) opposite[count++] = point(p);
+        }
+        in_k = orthosphere_is_unattached_in_union(sigma, {opposite.data(), count});
+      }
+      if (!in_k) continue;
+      facet_in_k_[4 * std::size_t{c} + static_cast<std::size_t>(i)] = 1;
+      facet_in_k_[4 * std::size_t{side.n} + static_cast<std::size_t>(side.m)] = 1;
+      out.triangles.push_back(t);
+      ++out.facet_classes[static_cast<std::size_t>(1 + tets_in_k)];
+    }
+  }
+
+  /// The edges (v, u) with u > v, in one pass over v's star: each cell c of the star and
+  /// each of its vertices u > v give the two facets of c through v and u (cofaces of the
+  /// edge) and their third vertices (the vertices p of the attachment test).
+  void classify_edges(VertexId v, WorkerLists& out) {
+    const auto cells = stars_.cells(v);
+    const auto neighbors = stars_.neighbors(v);
+    // Slots: the neighbours u > v, in order; slot_of[u] is a per-worker scratch map.
+    const auto first = std::upper_bound(neighbors.begin(), neighbors.end(), v);
+    const std::size_t slots = static_cast<std::size_t>(neighbors.end() - first);
+    if (slots == 0) return;
+    std::vector<std::uint32_t>& slot_of = out.slot_of;
+    if (slot_of.size() < rt_.number_of_points()) slot_of.assign(rt_.number_of_points(), 0);
+    for (std::size_t k = 0; k < slots; ++k) slot_of[first[k]] = static_cast<std::uint32_t>(k);
+    out.edge_in_k.assign(slots, 0);
+    out.ring_offsets.assign(slots + 1, 0);
+    // The star's cells and facet flags, read once (independent loads, see
+    // classify_facets) into a local copy that both passes use.
+    out.star.resize(cells.size());
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      StarCell& local = out.star[k];
+      local.v = rt_.vertices(cells[k]);
+      for (std::size_t a = 0; a < 4; ++a) {
+        local.facet_in_k[a] = facet_in_k_[4 * std::size_t{cells[k]} + a];
+      }
+    }
+    // Pass 1: facet flags decide most edges; count the ring entries of the others.
+    for (const StarCell& local : out.star) {
+      const int iv = local.index(v);
+      for (int j = 0; j < 4; ++j) {
+        const VertexId u = local.v[static_cast<std::size_t>(j)];
+        if (j == iv || u == kInfiniteVertex || u < v) continue;
+        const std::uint32_t slot = slot_of[u];
+        for (int a = 0; a < 4; ++a) {
+          if (a != iv && a != j && local.facet_in_k[static_cast<std::size_t>(a)]) {
+            out.edge_in_k[slot] = 1;
+          }
+        }
+        out.ring_offsets[slot + 1] += 2;
+      }
+    }
+    for (std::size_t k = 0; k < slots; ++k) out.ring_offsets[k + 1] += out.ring_offsets[k];
+    // Pass 2: the ring vertices of every edge, for the edges no coface put in K.
+    out.ring.assign(out.ring_offsets[slots], kInfiniteVertex);
+    out.ring_fill.assign(out.ring_offsets.begin(), out.ring_offsets.end() - 1);
+    for (const StarCell& local : out.star) {
+      const int iv = local.index(v);
+      for (int j = 0; j < 4; ++j) {
+        const VertexId u = local.v[static_cast<std::size_t>(j)];
+        if (j == iv || u == kInfiniteVertex || u < v) continue;
+        const std::uint32_t slot = slot_of[u];
+        if (out.edge_in_k[slot]) continue;
+        for (int a = 0; a < 4; ++a) {
+          if (a != iv && a != j) {
+            out.ring[out.ring_fill[slot]++] = local.v[static_cast<std::size_t>(a)];
+          }
+        }
+      }
+    }
+    for (std::size_t k = 0; k < slots; ++k) {
+      const VertexId u = first[k];
+      ++out.finite[1];
+      bool in_k = out.edge_in_k[k] != 0;
+      if (!in_k) {
+        auto begin = out.ring.begin() + static_cast<std::ptrdiff_t>(out.ring_offsets[k]);
+        auto end = out.ring.begin() + static_cast<std::ptrdiff_t>(out.ring_offsets[k + 1]);
+        std::sort(begin, end);
+        end = std::unique(begin, end);
+        out.opposite.clear();
+        for (auto it = begin; it != end; ++it) {
+          if (*it != kInfiniteVertex) out.opposite.push_back(point(*it));
+        }
+        const std::array<WeightedPoint, 2> sigma{point(v), point(u)};
+        in_k = orthosphere_is_unattached_in_union(sigma, out.opposite);
+      }
+      if (in_k) out.edges.push_back({v, u});
+    }
+  }
+
+  void classify_vertex(VertexId v, WorkerLists& out) {
+    if (!rt_.is_vertex(v)) return;
+    ++out.finite[0];
+    bool in_k = vertex_has_edge_[v] != 0;
+    if (!in_k) {
+      out.opposite.clear();
+      for (const VertexId u : stars_.neighbors(v)) out.opposite.push_back(point(u));
+      const std::array<WeightedPoint, 1> sigma{point(v)};
+      in_k = orthosphere_is_unattached_in_union(sigma, out.opposite);
+    }
+    if (in_k) out.vertices.push_back(v);
+  }
+
+  TriangulationDualComplex assemble() {
+    TriangulationDualComplex result;
+    SimplexLists lists;
+    std::array<std::size_t, 4> in_k{};
+    for (WorkerLists& l : lists_) {
+      for (int d = 0; d < 4; ++d) result.triangulation_counts[d] += l.finite[d];
+      for (int k = 1; k < 4; ++k) result.facet_classes[k] += l.facet_classes[k];
+      lists.tetrahedra.insert(lists.tetrahedra.end(), l.tetrahedra.begin(), l.tetrahedra.end());
+      lists.triangles.insert(lists.triangles.end(), l.triangles.begin(), l.triangles.end());
+      lists.edges.insert(lists.edges.end(), l.edges.begin(), l.edges.end());
+      lists.vertices.insert(lists.vertices.end(), l.vertices.begin(), l.vertices.end());
+      l = WorkerLists{};  // frees the scratch as well
+    }
+    in_k = {lists.vertices.size(), lists.edges.size(), lists.triangles.size(),
+            lists.tetrahedra.size()};
+    result.facet_classes[0] = result.triangulation_counts[2] - in_k[2];
+    result.complex = SimplicialComplex::closure_of(lists);
+    // K is closed under faces by the top-down rule: the closure adds nothing.
+    for (int d = 0; d < 4; ++d) {
+      RSTRUCT_ASSERT_MSG(result.complex.size(d) == in_k[d],
+                         "dual complex: the simplices of dimension " + std::to_string(d) +
+                             " classified in K are not closed under faces");
+    }
+    return result;
+  }
+
+  const RegularTriangulation3& rt_;
+  const VertexStars& stars_;
+  unsigned threads_;
+  unsigned workers_ = 1;
+  std::vector<WorkerLists> lists_;
+  std::vector<std::uint8_t> cell_in_k_;
+  std::vector<std::uint8_t> facet_in_k_;
+  std::vector<std::uint8_t> vertex_has_edge_;
+};
+
+}  // namespace
+
+TriangulationDualComplex classify_dual_complex(const triangulation::RegularTriangulation3& rt,
+                                               const triangulation::VertexStars& stars,
+                                               unsigned threads) {
+  return Classifier(rt, stars, threads).run();
+}
+
+}  // namespace rstruct::complex

@@ -1,0 +1,81 @@
+#include "rstruct/triangulation/vertex_stars.hpp"
+
+#include <algorithm>
+
+#include "rstruct/core/parallel.hpp"
+
+namespace rstruct::triangulation {
+
+VertexStars::VertexStars(const RegularTriangulation3& rt, unsigned threads) {
+  const std::size_t n = rt.number_of_points();
+  cell_offsets_.assign(n + 1, 0);
+  rt.for_each_cell([&](CellId c) {
+    for (int i = 0; i < 4; ++i) {
+      const VertexId v = rt.vertex(c, i);
+      if (v != kInfiniteVertex) ++cell_offsets_[v + 1];
+    }
+  });
+  for (std::size_t v = 0; v < n; ++v) cell_offsets_[v + 1] += cell_offsets_[v];
+  cells_.resize(cell_offsets_[n]);
+  {
+    std::vector<std::size_t> fill(cell_offsets_.begin(), cell_offsets_.end() - 1);
+    rt.for_each_cell([&](CellId c) {  // increasing ids: every star ends up sorted
+      for (int i = 0; i < 4; ++i) {
+        const VertexId v = rt.vertex(c, i);
+        if (v != kInfiniteVertex) cells_[fill[v]++] = c;
+      }
+    });
+  }
+
+  // Neighbours: the other finite vertices of the star, sorted and deduplicated. Each
+  // chunk of vertices fills its own list; the lists are then concatenated in order.
+  constexpr std::size_t kChunk = 4096;
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  std::vector<std::vector<VertexId>> lists(chunks);
+  std::vector<std::vector<std::uint32_t>> counts(chunks);
+  // last[w][u] == v + 1 once worker w listed u for v: each neighbour is pushed once, and
+  // only the distinct neighbours are sorted (a star lists each about five times).
+  std::vector<std::vector<VertexId>> last(thread_count(threads, chunks, 1));
+  parallel_chunks(chunks, threads, 1, [&](std::size_t begin, std::size_t end, unsigned w) {
+    std::vector<VertexId> scratch;
+    std::vector<VertexId>& seen = last[w];
+    if (seen.empty()) seen.assign(n, 0);
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::size_t first = k * kChunk;
+      const std::size_t last = std::min(n, first + kChunk);
+      std::vector<VertexId>& list = lists[k];
+      std::vector<std::uint32_t>& count = counts[k];
+      count.resize(last - first);
+      for (std::size_t v = first; v < last; ++v) {
+        scratch.clear();
+        const auto mark = static_cast<VertexId>(v + 1);
+        for (const CellId c : cells(static_cast<VertexId>(v))) {
+          for (int i = 0; i < 4; ++i) {
+            const VertexId u = rt.vertex(c, i);
+            if (u != kInfiniteVertex && u != v && seen[u] != mark) {
+              seen[u] = mark;
+              scratch.push_back(u);
+            }
+          }
+        }
+        std::sort(scratch.begin(), scratch.end());
+        count[v - first] = static_cast<std::uint32_t>(scratch.size());
+        list.insert(list.end(), scratch.begin(), scratch.end());
+      }
+    }
+  });
+  neighbor_offsets_.assign(n + 1, 0);
+  for (std::size_t k = 0; k < chunks; ++k) {
+    for (std::size_t i = 0; i < counts[k].size(); ++i) {
+      const std::size_t v = k * kChunk + i;
+      neighbor_offsets_[v + 1] = neighbor_offsets_[v] + counts[k][i];
+    }
+  }
+  neighbors_.reserve(neighbor_offsets_[n]);
+  for (auto& list : lists) {
+    neighbors_.insert(neighbors_.end(), list.begin(), list.end());
+    std::vector<VertexId>().swap(list);
+  }
+}
+
+}  // namespace rstruct::triangulation
