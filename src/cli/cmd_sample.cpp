@@ -11,6 +11,7 @@
 #include "cli/command.hpp"
 #include "rstruct/core/error.hpp"
 #include "rstruct/io/mesh_io.hpp"
+#include "rstruct/pipeline/feature_adaptive_sampling.hpp"
 #include "rstruct/sampling/sample_request.hpp"
 
 namespace rstruct::cli {
@@ -31,6 +32,16 @@ class SampleCommand : public Command {
     app.add_option("-p,--params", params_,
                    "Shape parameters as key=value,... (e.g. R=3,a=1 for the torus)");
     app.add_option("--mesh", mesh_path_, "Sample the surface of this triangle mesh (needs --n)");
+    app.add_option("--subdivide", subdivide_,
+                   "With --mesh: Loop-subdivide the mesh this many times first (a smooth "
+                   "surface near the model; a polyhedron has lfs 0 on its edges)")
+        ->check(CLI::Range(0, 8));
+    app.add_flag("--adaptive", adaptive_,
+                 "With --mesh: density proportional to 1/lfs^2, lfs estimated by the distance "
+                 "to the nearest pole of the previous round's sample (see --rounds)");
+    app.add_option("--rounds", rounds_, "With --adaptive: resampling rounds")
+        ->check(CLI::Range(1, 10))
+        ->capture_default_str();
     auto* r = app.add_option("--r", r_, "Certified r-sample: max dist(x,S)/lfs(x) <= R");
     auto* n = app.add_option("--n", n_, "N points uniform by area");
     r->excludes(n);
@@ -45,7 +56,8 @@ class SampleCommand : public Command {
         "Examples:\n"
         "  rstruct sample torus --r 0.04 -o torus.ply\n"
         "  rstruct sample double-torus --n 85237 -o dt.ply\n"
-        "  rstruct sample --mesh bunny.off --n 100000 -o bunny.ply");
+        "  rstruct sample --mesh bunny.off --n 100000 -o bunny.ply\n"
+        "  rstruct sample --mesh bunny.off --subdivide 3 --adaptive --n 150000 -o bunny.ply");
   }
 
   int run(Context& context) override {
@@ -54,6 +66,18 @@ class SampleCommand : public Command {
       request.mesh = io::read_mesh(mesh_path_);
     } else if (shape_.empty()) {
       throw InvalidInput("give a shape (" + join(sampling::surface_names()) + ") or --mesh FILE");
+    }
+    if ((subdivide_ > 0 || adaptive_) && mesh_path_.empty()) {
+      throw InvalidInput("--subdivide and --adaptive need --mesh");
+    }
+    request.subdivide = subdivide_;
+    if (adaptive_) {
+      pipeline::FeatureAdaptiveOptions options;
+      options.rounds = rounds_;
+      request.mesh_sampler = [options](const TriangleMesh& mesh, std::size_t n,
+                                       std::uint64_t seed) {
+        return pipeline::sample_mesh_feature_adaptive(mesh, n, seed, options).points;
+      };
     }
     request.shape = shape_;
     request.parameters = sampling::parse_shape_parameters(params_);
@@ -82,6 +106,11 @@ class SampleCommand : public Command {
     auto& data = context.report.data();
     data["shape"] = request.mesh ? "mesh:" + mesh_path_ : shape_;
     data["seed"] = seed_;
+    if (request.mesh) {
+      data["subdivide"] = subdivide_;
+      data["adaptive"] = adaptive_;
+      if (adaptive_) data["rounds"] = rounds_;
+    }
     data["points"] = out.points.size();
     std::ostringstream line;
     line << "sampled " << out.points.size() << " points in " << out.seconds << " s";
@@ -106,6 +135,9 @@ class SampleCommand : public Command {
   std::string shape_;
   std::string params_;
   std::string mesh_path_;
+  unsigned subdivide_ = 0;
+  bool adaptive_ = false;
+  unsigned rounds_ = 2;
   std::optional<double> r_;
   std::optional<long long> n_;
   std::uint64_t seed_ = 1;

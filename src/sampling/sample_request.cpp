@@ -8,6 +8,7 @@
 #include "rstruct/core/stopwatch.hpp"
 #include "rstruct/sampling/double_torus.hpp"
 #include "rstruct/sampling/ellipsoid.hpp"
+#include "rstruct/sampling/loop_subdivision.hpp"
 #include "rstruct/sampling/random.hpp"
 #include "rstruct/sampling/sphere.hpp"
 #include "rstruct/sampling/torus.hpp"
@@ -63,6 +64,12 @@ void check_request(const SampleRequest& request) {
   if (request.mesh && request.r) {
     throw InvalidInput("sample: a mesh can only be sampled with n points (its lfs is unknown)");
   }
+  if (!request.mesh && (request.subdivide > 0 || request.mesh_sampler)) {
+    throw InvalidInput("sample: subdivision and mesh samplers apply to a mesh only");
+  }
+  if (request.subdivide > 8) {
+    throw InvalidInput("sample: at most 8 Loop subdivision levels (each multiplies the faces by 4)");
+  }
   if (request.mesh && request.noise_scale == NoiseScale::kLfs && request.noise > 0.0) {
     throw InvalidInput("sample: noise relative to lfs is not available for a mesh");
   }
@@ -78,7 +85,12 @@ SampleOutput sample_mesh(const SampleRequest& request) {
   if (!is_finite(request.translate)) throw InvalidInput("translation must be finite");
   transform.t = request.translate;
   out.transform = transform;
-  out.points = sample_mesh_uniform(*request.mesh, *request.n, derive_seed(request.seed, 2));
+  TriangleMesh subdivided;
+  if (request.subdivide > 0) subdivided = loop_subdivide(*request.mesh, request.subdivide);
+  const TriangleMesh& mesh = request.subdivide > 0 ? subdivided : *request.mesh;
+  out.points = request.mesh_sampler
+                   ? request.mesh_sampler(mesh, *request.n, derive_seed(request.seed, 2))
+                   : sample_mesh_uniform(mesh, *request.n, derive_seed(request.seed, 2));
   for (Point3& p : out.points) p = transform.apply(p);
   add_gaussian_noise(out.points, request.noise, NoiseScale::kAbsolute, nullptr,
                      derive_seed(request.seed, 3));

@@ -77,9 +77,10 @@ std::vector<Point3> sample_uniform(const Surface& surface, std::size_t count, st
   return points;
 }
 
-std::vector<Point3> sample_mesh_uniform(const TriangleMesh& mesh, std::size_t count,
-                                        std::uint64_t seed) {
-  check_count(count);
+namespace {
+
+/// Checks the mesh's vertices and faces; returns the area of every face.
+std::vector<double> checked_face_areas(const TriangleMesh& mesh) {
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     if (!is_finite(mesh.vertices[i])) {
       std::ostringstream msg;
@@ -87,9 +88,8 @@ std::vector<Point3> sample_mesh_uniform(const TriangleMesh& mesh, std::size_t co
       throw InvalidInput(msg.str());
     }
   }
-  std::vector<double> prefix;
-  prefix.reserve(mesh.faces.size());
-  double total = 0.0;
+  std::vector<double> areas;
+  areas.reserve(mesh.faces.size());
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     const auto& tri = mesh.faces[f];
     for (std::uint32_t v : tri) {
@@ -101,7 +101,18 @@ std::vector<Point3> sample_mesh_uniform(const TriangleMesh& mesh, std::size_t co
       }
     }
     const Point3& a = mesh.vertices[tri[0]];
-    total += 0.5 * norm(cross(mesh.vertices[tri[1]] - a, mesh.vertices[tri[2]] - a));
+    areas.push_back(0.5 * norm(cross(mesh.vertices[tri[1]] - a, mesh.vertices[tri[2]] - a)));
+  }
+  return areas;
+}
+
+std::vector<Point3> sample_faces(const TriangleMesh& mesh, const std::vector<double>& weights,
+                                 std::size_t count, std::uint64_t seed) {
+  std::vector<double> prefix;
+  prefix.reserve(weights.size());
+  double total = 0.0;
+  for (double w : weights) {
+    total += w;
     prefix.push_back(total);
   }
   if (!(total > 0.0) || !std::isfinite(total)) {
@@ -111,12 +122,42 @@ std::vector<Point3> sample_mesh_uniform(const TriangleMesh& mesh, std::size_t co
   std::vector<Point3> points;
   points.reserve(count);
   for (std::size_t i = 0; i < count; ++i) {
-    // upper_bound skips zero-area triangles: their prefix equals the previous one.
+    // upper_bound skips zero-weight triangles: their prefix equals the previous one.
     const auto& tri = mesh.faces[choose(prefix, random)];
     points.push_back(point_in_triangle(mesh.vertices[tri[0]], mesh.vertices[tri[1]],
                                        mesh.vertices[tri[2]], random));
   }
   return points;
+}
+
+}  // namespace
+
+std::vector<Point3> sample_mesh_uniform(const TriangleMesh& mesh, std::size_t count,
+                                        std::uint64_t seed) {
+  check_count(count);
+  return sample_faces(mesh, checked_face_areas(mesh), count, seed);
+}
+
+std::vector<Point3> sample_mesh_weighted(const TriangleMesh& mesh,
+                                         std::span<const double> density, std::size_t count,
+                                         std::uint64_t seed) {
+  check_count(count);
+  std::vector<double> weights = checked_face_areas(mesh);
+  if (density.size() != weights.size()) {
+    std::ostringstream msg;
+    msg << "mesh sampling: " << density.size() << " face densities for " << weights.size()
+        << " faces";
+    throw InvalidInput(msg.str());
+  }
+  for (std::size_t f = 0; f < weights.size(); ++f) {
+    if (!(density[f] >= 0.0) || !std::isfinite(density[f])) {
+      std::ostringstream msg;
+      msg << "mesh sampling: the density of face " << f << " is not a finite number >= 0";
+      throw InvalidInput(msg.str());
+    }
+    weights[f] *= density[f];
+  }
+  return sample_faces(mesh, weights, count, seed);
 }
 
 }  // namespace rstruct::sampling

@@ -18,6 +18,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -50,6 +51,14 @@ struct SampleRequest {
   std::map<std::string, double> parameters;
   /// Sample a triangle mesh's surface instead of a named shape (then only n applies).
   std::optional<TriangleMesh> mesh;
+  /// Loop subdivision levels applied to `mesh` before sampling (loop_subdivision.hpp says
+  /// why a polyhedral model needs it), at most 8.
+  unsigned subdivide = 0;
+  /// Replaces uniform-by-area sampling of the (subdivided) mesh: called with the mesh, n
+  /// and a derived seed. The CLI passes pipeline::sample_mesh_feature_adaptive here (the
+  /// sampling module cannot call it: it needs the pole stage).
+  std::function<std::vector<Point3>(const TriangleMesh&, std::size_t, std::uint64_t)>
+      mesh_sampler;
   std::optional<double> r;       ///< certified lfs-adaptive r-sample (exclusive with n)
   std::optional<std::size_t> n;  ///< n points uniform by area
   std::uint64_t seed = 1;

@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "rstruct/geometry/triangle_mesh.hpp"
@@ -32,5 +33,13 @@ std::vector<Point3> sample_uniform(const Surface& surface, std::size_t count, st
 /// missing vertex, a vertex is not finite, or count > 1e9.
 std::vector<Point3> sample_mesh_uniform(const TriangleMesh& mesh, std::size_t count,
                                         std::uint64_t seed);
+
+/// `count` points on the triangles of `mesh` with density ∝ `density[f]` (per unit area) on
+/// face f: a face is chosen with probability ∝ area × density, then a point uniformly in it.
+/// \throws InvalidInput as sample_mesh_uniform, or if `density` does not have one finite
+/// value ≥ 0 per face, or all faces get weight 0.
+std::vector<Point3> sample_mesh_weighted(const TriangleMesh& mesh,
+                                         std::span<const double> density, std::size_t count,
+                                         std::uint64_t seed);
 
 }  // namespace rstruct::sampling
