@@ -246,14 +246,15 @@ class RegularTriangulation3 {
   // ---- constructions (double arithmetic: measurements, not decisions) -------------------
 
   /// Circumcentre of finite cell c (centre of the sphere through its vertices' points,
-  /// ignoring weights). Double arithmetic, relative to the cell's first vertex; inaccurate
-  /// for nearly flat cells. \pre c finite.
+  /// ignoring weights), a rounded double: double arithmetic relative to the cell's first
+  /// vertex for well-shaped cells, exact rationals rounded once for slivers and nearly flat
+  /// cells (|det| < 2⁻²⁶ of the edge-length product). \pre c finite.
   Point3 circumcenter(CellId c) const;
   /// Squared circumradius of finite cell c (double).
   double squared_circumradius(CellId c) const;
   /// Orthocentre of finite cell c: the centre of the sphere orthogonal to its four weighted
   /// vertices (the power-diagram vertex dual to c). Equals circumcenter() when unweighted.
-  /// Double arithmetic. \pre c finite.
+  /// A rounded double, computed as circumcenter(). \pre c finite.
   Point3 orthocenter(CellId c) const;
   /// Squared radius of the orthosphere (its weight; may be negative). Double arithmetic.
   double squared_orthoradius(CellId c) const;
