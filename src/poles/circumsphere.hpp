@@ -11,7 +11,8 @@ struct Circumsphere {
   double squared_radius; ///< |offset|²
 };
 
-/// Circumsphere of the tetrahedron abcd. Well-shaped tetrahedra use floating point
+/// Circumsphere of the tetrahedron abcd (triangulation::orthosphere_offset with zero
+/// weights). Well-shaped tetrahedra use floating point
 /// (relative error of the centre a small multiple of 2⁻²⁶ of the circumradius); when the
 /// volume is tiny relative to the edge lengths (slivers, nearly flat) the centre is computed
 /// exactly with rationals and rounded once.

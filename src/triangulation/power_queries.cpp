@@ -1,12 +1,11 @@
 // Double constructions (circum/orthocentres) and power-diagram queries of
 // RegularTriangulation3.
-#include <cmath>
-#include <gmpxx.h>
 #include <string>
 
 #include "rstruct/core/assert.hpp"
 #include "rstruct/core/error.hpp"
 #include "rstruct/predicates/predicates.hpp"
+#include "rstruct/triangulation/orthosphere.hpp"
 #include "rstruct/triangulation/regular_triangulation_3.hpp"
 
 namespace rstruct::triangulation {
@@ -20,62 +19,11 @@ struct Sphere {
   double squared_radius;
 };
 
-/// Exact y (centre − a) of the orthosphere, rounded once per coordinate: the same formula
-/// as below over GMP rationals. \pre abcd not flat.
-Vec3 exact_offset(const Point3& a, double wa, const Point3& b, double wb, const Point3& c,
-                  double wc, const Point3& d, double wd) {
-  mpq_class u[3], v[3], w[3];
-  for (std::size_t i = 0; i < 3; ++i) {
-    u[i] = mpq_class(b[i]) - mpq_class(a[i]);
-    v[i] = mpq_class(c[i]) - mpq_class(a[i]);
-    w[i] = mpq_class(d[i]) - mpq_class(a[i]);
-  }
-  const mpq_class vw[3] = {v[1] * w[2] - v[2] * w[1], v[2] * w[0] - v[0] * w[2],
-                           v[0] * w[1] - v[1] * w[0]};
-  const mpq_class wu[3] = {w[1] * u[2] - w[2] * u[1], w[2] * u[0] - w[0] * u[2],
-                           w[0] * u[1] - w[1] * u[0]};
-  const mpq_class uv[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-                           u[0] * v[1] - u[1] * v[0]};
-  const mpq_class den = 2 * (u[0] * vw[0] + u[1] * vw[1] + u[2] * vw[2]);
-  RSTRUCT_ASSERT_MSG(sgn(den) != 0, "orthosphere of a flat cell");
-  const mpq_class qa(wa);
-  const mpq_class su = u[0] * u[0] + u[1] * u[1] + u[2] * u[2] - mpq_class(wb) + qa;
-  const mpq_class sv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2] - mpq_class(wc) + qa;
-  const mpq_class sw = w[0] * w[0] + w[1] * w[1] + w[2] * w[2] - mpq_class(wd) + qa;
-  Vec3 y;
-  for (std::size_t i = 0; i < 3; ++i) {
-    const mpq_class x = (su * vw[i] + sv * wu[i] + sw * uv[i]) / den;
-    y[i] = x.get_d();
-  }
-  return y;
-}
-
-/// The sphere orthogonal to four weighted points: with u = b − a etc. and lifted values
-/// s_u = |u|² − w_b + w_a, the centre a + y solves 2 u·y = s_u (three equations), and the
-/// squared radius is |y|² − w_a. Solved by Cramer's rule with cross products in doubles
-/// when the cell is well shaped; when |det| < 2⁻²⁶·|u||v||w| (slivers, nearly flat cells,
-/// where the double centre can be off by many circumradii) y is computed exactly with
-/// rationals and rounded once. The lemma tests found double centres of sliver Delaunay
-/// cells several local feature sizes away from the exact ones.
+/// The sphere orthogonal to four weighted points (orthosphere.hpp), centre and squared
+/// radius |y|² − w_a.
 Sphere orthosphere(const Point3& a, double wa, const Point3& b, double wb, const Point3& c,
                    double wc, const Point3& d, double wd) {
-  const Vec3 u = b - a;
-  const Vec3 v = c - a;
-  const Vec3 w = d - a;
-  const double su = squared_norm(u) - wb + wa;
-  const double sv = squared_norm(v) - wc + wa;
-  const double sw = squared_norm(w) - wd + wa;
-  const Vec3 vw = cross(v, w);
-  const Vec3 wu = cross(w, u);
-  const Vec3 uv = cross(u, v);
-  const double det = dot(u, vw);
-  const double scale = std::sqrt(squared_norm(u) * squared_norm(v) * squared_norm(w));
-  Vec3 y;
-  if (std::isfinite(det) && std::fabs(det) > 0x1p-26 * scale) {
-    y = (su * vw + sv * wu + sw * uv) / (2.0 * det);
-  } else {
-    y = exact_offset(a, wa, b, wb, c, wc, d, wd);
-  }
+  const Vec3 y = orthosphere_offset(a, wa, b, wb, c, wc, d, wd);
   return {a + y, squared_norm(y) - wa};
 }
 

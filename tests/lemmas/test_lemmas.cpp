@@ -497,7 +497,10 @@ void check_pruned_balls(const Instance& in, Table& t, std::size_t& kept, std::si
   options.rho = in.rho;
   options.rho_tilde = kRhoTilde;
   options.prune.time_limit = 0.05;  // any cover carries Theorem 6.1; no need for the best
-  const auto seed = rstruct::pipeline::compute_seed_polytope(in.samples, options);
+  // The instance's own pole analysis, so the balls are exactly those the other checks use.
+  // (The overload without it recomputes the poles on the samples in Hilbert order, whose
+  // rounded circumcentres, hence D̂, may differ in the last bits.)
+  const auto seed = rstruct::pipeline::compute_seed_polytope(in.samples, in.analysis, options);
   CHECK(seed.dhat == in.analysis.dhat.distance);  // the same D̂ as the pole analysis
   CHECK(seed.pruned);
   kept += seed.kept.size();
