@@ -69,9 +69,15 @@ TEST_CASE("equal balls on a non-dyadic grid: four spheres through a point", "[me
 }
 
 TEST_CASE("equal balls on a grid, perturbed by 2^-45", "[medial][.degenerate]") {
-  // Known failure: after the perturbation no four spheres share a point, but the points of
-  // V around each grid square are ~1e-13 apart, the size of the rounding of their double
-  // constructions, so the Delaunay/Voronoi structure of V is not the true one.
+  // Known failure (hidden until fixed): the axis merges the four cavities, Betti (1,0,1)
+  // instead of K's (1,0,4). It is not a rounding effect: the same failure appears for
+  // every perturbation from 2^-20 (points of V 1e-6 apart, constructions accurate to
+  // 1e-16) down to 2^-50, while 2^-12 works (test below). Near each grid square the one
+  // four-sphere point of the exact grid splits into four three-sphere points, and the
+  // walls between cavities must be tiled by Voronoi faces between two such clusters. Where
+  // those faces are lost is not found yet (suspects: the clipping at ball centres only by
+  // cone faces through two shared centres, and the whole-face rule that drops a face when
+  // one of its Voronoi vertices is not inner). Computing V in long double changes nothing.
   std::vector<Ball> balls = grid(3, 3, 2, 0.75);
   for (std::size_t i = 0; i < balls.size(); ++i) {
     balls[i].c.x += std::ldexp(static_cast<double>(i % 5) - 2.0, -45);
