@@ -4,8 +4,11 @@
 //
 // usage: bench_setcover [--data DIR] [--weighted-limit S] [--unicost-limit S] [--only NAME]
 //                       [--skip-orlib] [--geometric] [--geometric-limit S] [--seed N]
+//                       [--write DIR]   (geometric instances also written in OR-Library
+//                                        row format, unit costs, for other solvers)
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -42,6 +45,7 @@ struct Args {
   std::int64_t ls_iterations = 0;  // 0: time limit only
   double only_rho = 0.0;  // 0: both 0.03 and 0.1
   int only_shape = -1;    // -1: torus and double torus
+  std::string write_dir;  // non-empty: also write each geometric instance there
 };
 
 // Best-known unicost values from the data README (families 4, 5, 6, A).
@@ -201,6 +205,25 @@ void run_geometric(const Args& args) {
       rstruct::Stopwatch build;
       const Instance inst = geometric_instance(shape == 1, args.samples, rho, args.seed);
       const double build_s = build.seconds();
+      if (!args.write_dir.empty()) {
+        // OR-Library row format (unit costs), for other solvers to reproduce the figures.
+        char name[64];
+        std::snprintf(name, sizeof name, "/%s_%.2f.txt", shape == 0 ? "torus" : "double_torus", rho);
+        std::FILE* f = std::fopen((args.write_dir + name).c_str(), "w");
+        if (f == nullptr) {
+          std::fprintf(stderr, "cannot write %s%s\n", args.write_dir.c_str(), name);
+          std::exit(1);
+        }
+        std::fprintf(f, "%d %d\n", inst.num_rows(), inst.num_cols());
+        for (std::int32_t j = 0; j < inst.num_cols(); ++j) std::fprintf(f, "1%c", j % 12 == 11 ? '\n' : ' ');
+        std::fprintf(f, "\n");
+        for (std::int32_t i = 0; i < inst.num_rows(); ++i) {
+          std::fprintf(f, "%zu\n", inst.row(i).size());
+          for (std::int32_t j : inst.row(i)) std::fprintf(f, "%d ", j + 1);
+          std::fprintf(f, "\n");
+        }
+        std::fclose(f);
+      }
       SolverOptions opt;
       opt.time_limit = args.geometric_limit;
       opt.seed = args.seed;
@@ -247,6 +270,7 @@ int main(int argc, char** argv) {
     else if (a == "--rho") args.only_rho = std::stod(value());
     else if (a == "--ls-iterations") args.ls_iterations = std::stoll(value());
     else if (a == "--shape") args.only_shape = std::stoi(value());
+    else if (a == "--write") args.write_dir = value();
     else {
       std::fprintf(stderr, "unknown argument %s\n", a.c_str());
       return 2;

@@ -72,12 +72,16 @@ TEST_CASE("equal balls on a grid, perturbed by 2^-45", "[medial][.degenerate]") 
   // Known failure (hidden until fixed): the axis merges the four cavities, Betti (1,0,1)
   // instead of K's (1,0,4). It is not a rounding effect: the same failure appears for
   // every perturbation from 2^-20 (points of V 1e-6 apart, constructions accurate to
-  // 1e-16) down to 2^-50, while 2^-12 works (test below). Near each grid square the one
-  // four-sphere point of the exact grid splits into four three-sphere points, and the
-  // walls between cavities must be tiled by Voronoi faces between two such clusters. Where
-  // those faces are lost is not found yet (suspects: the clipping at ball centres only by
-  // cone faces through two shared centres, and the whole-face rule that drops a face when
-  // one of its Voronoi vertices is not inner). Computing V in long double changes nothing.
+  // 1e-16) down to 2^-50, while 2^-12 works (test below); computing V in long double
+  // changes nothing. Diagnosis: the three lost walls are outer walls (x = 0 and x = 2).
+  // Near such a wall's centre the one four-sphere point of the exact grid splits into
+  // clusters of three-sphere points on both sides; the Voronoi vertex at the wall's centre
+  // (a tetrahedron with two sites of each cluster) lies, in the unperturbed limit, exactly
+  // on a face of a site's normal cone (the square's diagonal), and the perturbation puts it
+  // a hair outside, so it is not inner, and the whole-face rule (a face goes when one of
+  // its Voronoi vertices is not inner) removes every wall face around it instead of
+  // cutting a sliver off them. The fix needs the faces clipped by the whole normal cones
+  // of their sites, with consistent cut vertices between neighbouring faces.
   std::vector<Ball> balls = grid(3, 3, 2, 0.75);
   for (std::size_t i = 0; i < balls.size(); ++i) {
     balls[i].c.x += std::ldexp(static_cast<double>(i % 5) - 2.0, -45);
