@@ -250,12 +250,19 @@ LocalSearchResult row_weighting_search(const Instance& inst, const std::vector<s
         result.best_cost = c;
         result.seconds_to_best = clock.seconds();
         last_improvement = it;
-        if (c <= options.target + slack) break;
+        if (c <= options.target + slack) {
+          if (options.stop != nullptr) options.stop->store(true, std::memory_order_relaxed);
+          break;
+        }
       }
       s.remove(s.pick_removal(-1));
       continue;
     }
-    if (++it > options.max_iterations || ((it & 63) == 0 && clock.seconds() > options.deadline)) break;
+    if (++it > options.max_iterations) break;
+    if ((it & 63) == 0 && (clock.seconds() > options.deadline ||
+                           (options.stop != nullptr && options.stop->load(std::memory_order_relaxed)))) {
+      break;
+    }
     if (it - last_improvement > kRestartIterations && !result.best.empty()) {
       last_improvement = it;
       restart(result.best);

@@ -10,6 +10,7 @@
 // weights and a new random stream. Unicost instances use RWLS's order (drop, then repair);
 // weighted ones add first and then drop.
 
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct LocalSearchOptions {
   std::uint64_t seed = 1;
   /// Stop as soon as a cover of cost <= target is found (a proven lower bound).
   double target = 0.0;
+  /// Shared by concurrent searches (may be null): checked with the deadline, and set when
+  /// this search reaches the target, so that the others stop too.
+  std::atomic<bool>* stop = nullptr;
 };
 
 struct LocalSearchResult {

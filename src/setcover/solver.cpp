@@ -1,7 +1,9 @@
 #include "rstruct/setcover/solver.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <thread>
 
 #include "branch_and_bound.hpp"
 #include "greedy.hpp"
@@ -42,6 +44,8 @@ struct Budget {
   std::int64_t local_search_iterations = 0;  ///< 0: unlimited
   std::int32_t subgradient_iterations = 0;
   std::uint64_t seed = 1;
+  std::int32_t streams = 1;
+  unsigned threads = 1;
 };
 
 /// Columns j that may still be in a cover cheaper than `ub`: bound + reduced_j must stay
@@ -104,13 +108,41 @@ void improve_by_local_search(const Instance& inst, detail::LagrangianState& st,
   for (std::int32_t j : st.cover) {
     if (local_of[j] >= 0) seed_cols.push_back(local_of[j]);
   }
-  detail::LocalSearchOptions lso;
-  lso.deadline = budget.deadline;
-  lso.seed = budget.seed;
-  lso.max_iterations = budget.local_search_iterations > 0 ? budget.local_search_iterations : INT64_MAX;
-  lso.target = inst.has_integer_costs() ? std::ceil(st.bound - 1e-9) : st.bound;
-  const auto ls = detail::row_weighting_search(sub, seed_cols, st.cover_cost, lso, clock);
-  out.local_search_iterations = ls.iterations;
+  const auto streams = static_cast<std::size_t>(std::max(1, budget.streams));
+  const bool limited = budget.local_search_iterations > 0;
+  std::atomic<bool> stop{false};
+  std::vector<detail::LocalSearchResult> results(streams);
+  auto run_stream = [&](std::size_t s, double deadline) {
+    detail::LocalSearchOptions lso;
+    lso.deadline = deadline;
+    lso.seed = budget.seed + 0x632BE59BD9B4E019ULL * s;
+    lso.max_iterations = limited ? budget.local_search_iterations : INT64_MAX;
+    lso.target = inst.has_integer_costs() ? std::ceil(st.bound - 1e-9) : st.bound;
+    // With an iteration limit every stream runs to its end (a deterministic result);
+    // otherwise the first stream to reach the bound stops the others.
+    lso.stop = limited ? nullptr : &stop;
+    results[s] = detail::row_weighting_search(sub, seed_cols, st.cover_cost, lso, clock);
+  };
+  const unsigned threads = std::max(1u, std::min<unsigned>(budget.threads, static_cast<unsigned>(streams)));
+  if (threads >= streams) {
+    std::vector<std::jthread> pool;
+    for (std::size_t s = 1; s < streams; ++s) pool.emplace_back(run_stream, s, budget.deadline);
+    run_stream(0, budget.deadline);
+  } else {
+    for (std::size_t s = 0; s < streams; ++s) {
+      const double now = clock.seconds();
+      const double left = std::max(0.0, budget.deadline - now);
+      run_stream(s, now + left / static_cast<double>(streams - s));
+    }
+  }
+  std::size_t winner = 0;
+  for (std::size_t s = 0; s < streams; ++s) {
+    out.local_search_iterations += results[s].iterations;
+    const auto& r = results[s];
+    const auto& w = results[winner];
+    if (!r.best.empty() && (w.best.empty() || r.best_cost < w.best_cost)) winner = s;
+  }
+  const detail::LocalSearchResult& ls = results[winner];
   if (!ls.best.empty() && ls.best_cost < st.cover_cost) {
     st.cover.clear();
     for (std::int32_t k : ls.best) st.cover.push_back(map[k]);
@@ -217,6 +249,9 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
     const double now = clock.seconds();
     budget.deadline = now + share * std::max(0.0, options.time_limit - now);
     budget.seed = options.seed * 0x9E3779B97F4A7C15ULL + k;
+    budget.streams = options.local_search_streams;
+    budget.threads = options.threads != 0 ? options.threads
+                                          : std::max(1u, std::thread::hardware_concurrency());
     budget.subgradient_iterations = options.max_subgradient_iterations;
     if (options.max_local_search_iterations > 0) {
       budget.local_search_iterations = std::max<std::int64_t>(
