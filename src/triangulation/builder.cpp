@@ -97,6 +97,8 @@ void Builder::run() {
   t_.processed_ = 4;
   for (std::size_t k = 0; k < 4; ++k) after_insertion(vertex_at(k));
   for (std::size_t k = 4; k < n; ++k) {
+    if (k == n / 64 || k == n / 8) reserve_for_projection(k, n, 1.3);
+    if (k == n / 2) reserve_for_projection(k, n, 1.1);
     insert(vertex_at(k));
     t_.processed_ = k + 1;
     after_insertion(vertex_at(k));
@@ -112,6 +114,23 @@ void Builder::run() {
   t_.order_.shrink_to_fit();
   t_.finalize(raw_hidden_);
   t_.stats_.insertion_seconds = clock.seconds();
+}
+
+// Points on a surface have Theta(n log n) Delaunay cells (cylinder-like pieces: Devillers,
+// Erickson & Goaoc), 20 per point for 10^6 points on a torus. Growing the cell array by
+// doubling late in the construction copies hundreds of MiB and holds both copies: peak
+// memory near twice the final size. So after k of the n points (k = n/64, n/8, n/2: the
+// sample is random, the BRIO rounds spread over the whole input), the cells per inserted
+// point are extrapolated to n with a margin and reserved at once, while the copy is small.
+void Builder::reserve_for_projection(std::size_t k, std::size_t n, double margin) {
+  auto& cells = t_.cells_;
+  const double per_point = static_cast<double>(cells.size()) / static_cast<double>(k);
+  const double projected = margin * per_point * static_cast<double>(n) + 64;
+  if (projected > static_cast<double>(cells.capacity()) &&
+      projected < static_cast<double>(kMaxCells)) {
+    cells.reserve(static_cast<std::size_t>(projected));
+    marks_.reserve(cells.capacity() / 32 + 1);
+  }
 }
 
 void Builder::permute_to_insertion_order() {
@@ -207,7 +226,7 @@ bool Builder::choose_first_tetrahedron() {
 }
 
 void Builder::make_first_cells(const VertexId (&v)[4]) {
-  std::vector<Cell>& cells = t_.cells_;
+  auto& cells = t_.cells_;
   cells.push_back({{v[0], v[1], v[2], v[3]}, {0, 0, 0, 0}});
   for (int i = 0; i < 4; ++i) {
     Cell k = cells[0];
@@ -247,7 +266,7 @@ void Builder::make_first_cells(const VertexId (&v)[4]) {
 }
 
 CellId Builder::new_cell() {
-  std::vector<Cell>& cells = t_.cells_;
+  auto& cells = t_.cells_;
   if (t_.free_head_ != kNoCell) {
     const CellId c = t_.free_head_;
     t_.free_head_ = cells[c].n[0];
@@ -350,24 +369,30 @@ void Builder::find_conflict_region(CellId start, VertexId p) {
 }
 
 // One new cell per boundary facet (the facet joined to p), linked to the cell outside the
-// cavity; link_star() links the new cells among themselves.
+// cavity; link_star() links the new cells among themselves. The boundary vertices get
+// their local numbers here, once per new cell, while the cell is in cache.
 void Builder::build_star(VertexId p) {
-  std::vector<Cell>& cells = t_.cells_;
+  auto& cells = t_.cells_;
   star_.clear();
+  star_local_.clear();
+  local_vertices_.clear();
   for (const BoundaryFacet& b : boundary_) {
     const CellId n = new_cell();
     Cell& k = cells[n];
     const Cell& x = cells[b.cell];
     const std::uint32_t out = x.n[b.index];
+    std::array<std::uint8_t, 4> local{};
     for (int j = 0; j < 4; ++j) {
       k.v[j] = x.v[j];
       k.n[j] = kUnlinked;
+      if (j != b.index) local[static_cast<std::size_t>(j)] = local_number(x.v[j]);
     }
     k.v[b.index] = p;
     k.n[b.index] = out;
     const std::uint32_t self = n << 2 | static_cast<std::uint32_t>(b.index);
     cells[out >> 2].n[out & 3u] = self;
     star_.push_back(n);
+    star_local_.push_back(local);
   }
   link_star();
   last_ = star_.front();
@@ -379,45 +404,43 @@ void Builder::build_star(VertexId p) {
 // of new cell n is written at [a][b] and finds its partner at [b][a]: no search, no
 // branch. Larger cavities (degenerate input) use a hash table.
 void Builder::link_star() {
-  std::vector<Cell>& cells = t_.cells_;
-  local_vertices_.clear();
-  const auto local = [&](VertexId v) -> std::size_t {
-    if (v == kInfiniteVertex) return 0;
-    if (vertex_local_[v] == 0 && local_vertices_.size() < kLocal - 1) {
-      local_vertices_.push_back(v);
-      vertex_local_[v] = static_cast<std::uint8_t>(local_vertices_.size());
-    }
-    return vertex_local_[v];  // 0 only when the numbering overflowed
-  };
-  // Pass 0 writes every directed edge, pass 1 reads the reversed one.
-  for (int pass = 0; pass < 2; ++pass) {
-    for (std::size_t s = 0; s < star_.size(); ++s) {
-      const CellId n = star_[s];
-      const int i = boundary_[s].index;  // p's index in n
-      for (int j = 0; j < 4; ++j) {
-        if (j == i) continue;
-        const std::size_t a = local(cells[n].v[kDirected[i][j][0]]);
-        const std::size_t b = local(cells[n].v[kDirected[i][j][1]]);
-        if (pass == 0) {
-          edge_faces_[a * kLocal + b] = n << 2 | static_cast<std::uint32_t>(j);
-        } else {
-          cells[n].n[j] = edge_faces_[b * kLocal + a];
-        }
-      }
-    }
-    if (local_vertices_.size() == kLocal - 1) break;  // may have overflowed: start over
-  }
   for (const VertexId v : local_vertices_) vertex_local_[v] = 0;
+  // With every number in use, a vertex may have gone unnumbered (0, like the infinite one).
   if (local_vertices_.size() == kLocal - 1) {
     ++t_.stats_.large_cavities;
     link_star_hashed();
+    return;
+  }
+  auto& cells = t_.cells_;
+  const std::size_t m = star_.size();
+  for (std::size_t s = 0; s < m; ++s) {
+    const std::uint32_t n = star_[s];
+    const int i = boundary_[s].index;  // p's index in n
+    const std::array<std::uint8_t, 4>& local = star_local_[s];
+    for (int j = 0; j < 4; ++j) {
+      if (j == i) continue;
+      const std::size_t a = local[static_cast<std::size_t>(kDirected[i][j][0])];
+      const std::size_t b = local[static_cast<std::size_t>(kDirected[i][j][1])];
+      edge_faces_[a * kLocal + b] = n << 2 | static_cast<std::uint32_t>(j);
+    }
+  }
+  for (std::size_t s = 0; s < m; ++s) {
+    const std::uint32_t n = star_[s];
+    const int i = boundary_[s].index;
+    const std::array<std::uint8_t, 4>& local = star_local_[s];
+    for (int j = 0; j < 4; ++j) {
+      if (j == i) continue;
+      const std::size_t a = local[static_cast<std::size_t>(kDirected[i][j][0])];
+      const std::size_t b = local[static_cast<std::size_t>(kDirected[i][j][1])];
+      cells[n].n[j] = edge_faces_[b * kLocal + a];
+    }
   }
 }
 
 // Fallback for cavities with many boundary vertices: an open-addressing table keyed by the
 // edge's vertex ids pairs the facets; stamps avoid clearing it.
 void Builder::link_star_hashed() {
-  std::vector<Cell>& cells = t_.cells_;
+  auto& cells = t_.cells_;
   std::size_t size = 64;
   while (size < 4 * boundary_.size()) size *= 2;
   if (edge_table_.size() < size || ++stamp_ == 0) {
@@ -455,7 +478,7 @@ void Builder::link_star_hashed() {
 }
 
 void Builder::collect_hidden_vertices(VertexId p, VertexId duplicate_of) {
-  const std::vector<Cell>& cells = t_.cells_;
+  const auto& cells = t_.cells_;
   if (weights_ == nullptr) {
     if (duplicate_of != kInfiniteVertex) raw_hidden_.push_back({duplicate_of, last_});
     return;
@@ -487,7 +510,7 @@ void Builder::collect_hidden_vertices(VertexId p, VertexId duplicate_of) {
 }
 
 void Builder::release_conflict_region() {
-  std::vector<Cell>& cells = t_.cells_;
+  auto& cells = t_.cells_;
   for (const CellId x : conflict_) {
     cells[x].v[0] = RegularTriangulation3::kFreeMark;
     cells[x].n[0] = t_.free_head_;

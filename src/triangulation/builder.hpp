@@ -2,6 +2,7 @@
 // The incremental construction of a RegularTriangulation3 (Bowyer–Watson with the perturbed
 // power test). Private to src/triangulation.
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -26,6 +27,7 @@ class Builder {
 
   bool choose_first_tetrahedron();
   void permute_to_insertion_order();
+  void reserve_for_projection(std::size_t k, std::size_t n, double margin);
   void restore_input_order();
   /// Vertex id of the k-th point inserted.
   VertexId vertex_at(std::size_t k) const {
@@ -39,6 +41,16 @@ class Builder {
   void find_conflict_region(CellId start, VertexId p);
   void build_star(VertexId p);
   void link_star();
+  /// Number of boundary vertex v (1..kLocal-1; the infinite vertex is 0), or 0 when the
+  /// numbering is full.
+  std::uint8_t local_number(VertexId v) {
+    if (v == kInfiniteVertex) return 0;
+    if (vertex_local_[v] == 0 && local_vertices_.size() < kLocal - 1) {
+      local_vertices_.push_back(v);
+      vertex_local_[v] = static_cast<std::uint8_t>(local_vertices_.size());
+    }
+    return vertex_local_[v];
+  }
   void link_star_hashed();
   void collect_hidden_vertices(VertexId p, VertexId duplicate_of);
   void release_conflict_region();
@@ -65,6 +77,7 @@ class Builder {
   std::vector<CellId> outside_;
   std::vector<BoundaryFacet> boundary_;
   std::vector<CellId> star_;                // new cell of boundary_[k]
+  std::vector<std::array<std::uint8_t, 4>> star_local_;  // its vertices' local numbers
   struct EdgeSlot {
     std::uint64_t key;    // the edge's two vertex ids, smaller first
     std::uint32_t face;   // new cell << 2 | facet index

@@ -42,6 +42,7 @@
 #include <string>
 #include <vector>
 
+#include "rstruct/core/huge_page_allocator.hpp"
 #include "rstruct/geometry/vec3.hpp"
 
 namespace rstruct::triangulation {
@@ -325,7 +326,8 @@ class RegularTriangulation3 {
 
   std::vector<Point3> points_;
   std::vector<double> weights_;
-  std::vector<Cell> cells_;
+  /// Huge pages: the cells are hundreds of MiB, filled in order and read at random.
+  std::vector<Cell, HugePageAllocator<Cell>> cells_;
   std::vector<CellId> vertex_cell_;   // per input point: an incident cell or kNoCell
   std::vector<HiddenPoint> hidden_;
   std::vector<DuplicatePoint> duplicates_;
