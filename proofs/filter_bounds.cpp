@@ -1,10 +1,10 @@
 // Re-derives every error constant of the predicates' floating-point filters
-// (src/predicates/filter_constants.hpp) and checks that the coded constant is at least
+// (include/rstruct/predicates/detail/filter_constants.hpp) and checks that the coded constant is at least
 // the derived bound. Each claim prints its enclosure, the margin and HOLDS/FAILS; the
 // program exits non-zero if one fails.
 //
 // Method: a priori forward error analysis carried out mechanically. The filters evaluate
-// the templates of src/predicates/polynomials.hpp with T = double; here the same templates
+// the templates of include/rstruct/predicates/detail/polynomials.hpp with T = double; here the same templates
 // run with T = Tracked, a number that carries, in outward-rounded intervals (MPFI), an
 // upper bound `mag` on the exact value's magnitude and `err` on the accumulated error,
 // with every input column normalised to maximum 1 (filter_constants.hpp states the
@@ -31,8 +31,8 @@
 #include <string>
 #include <vector>
 
-#include "predicates/filter_constants.hpp"
-#include "predicates/polynomials.hpp"
+#include "rstruct/predicates/detail/filter_constants.hpp"
+#include "rstruct/predicates/detail/polynomials.hpp"
 
 namespace {
 

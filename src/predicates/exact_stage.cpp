@@ -14,7 +14,7 @@
 #include <initializer_list>
 #include <string>
 
-#include "predicates/polynomials.hpp"
+#include "rstruct/predicates/detail/polynomials.hpp"
 #include "predicates/scaled_integer.hpp"
 #include "rstruct/core/error.hpp"
 
