@@ -22,6 +22,11 @@
 // m_x·m_y·m_z·m_j·m_k for insphere), so the bound at the actual maxima is at most the
 // bound at all maxima 1 times S. The filter computes S·K in floating point with r
 // roundings towards zero at worst, so the claim is K·(1 − u)^r ≥ err(1, ..., 1).
+// Nothing uses that m is the *largest* magnitude of its column, only that it bounds every
+// computed magnitude there and is at least the guard's 2^-b: the almost-static filters
+// (include/rstruct/predicates/almost_static_filter.hpp) use the box extents
+// W_i = fl(hi_i − lo_i) ≥ |fl(p_i − q_i)| (monotone rounding) with the same K, the same
+// expression for K·S and the guard applied to W, so they need no constant of their own.
 #include <boost/multiprecision/mpfi.hpp>
 
 #include <cmath>
