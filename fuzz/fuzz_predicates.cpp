@@ -12,7 +12,7 @@
 
 #include "../tests/predicates/rational_oracle.hpp"
 #include "predicates/exact_stage.hpp"
-#include "predicates/filters.hpp"
+#include "rstruct/predicates/detail/filters.hpp"
 #include "rstruct/core/error.hpp"
 #include "rstruct/predicates/predicates.hpp"
 

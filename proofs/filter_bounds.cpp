@@ -1,10 +1,10 @@
 // Re-derives every error constant of the predicates' floating-point filters
-// (src/predicates/filter_constants.hpp) and checks that the coded constant is at least
+// (include/rstruct/predicates/detail/filter_constants.hpp) and checks that the coded constant is at least
 // the derived bound. Each claim prints its enclosure, the margin and HOLDS/FAILS; the
 // program exits non-zero if one fails.
 //
 // Method: a priori forward error analysis carried out mechanically. The filters evaluate
-// the templates of src/predicates/polynomials.hpp with T = double; here the same templates
+// the templates of include/rstruct/predicates/detail/polynomials.hpp with T = double; here the same templates
 // run with T = Tracked, a number that carries, in outward-rounded intervals (MPFI), an
 // upper bound `mag` on the exact value's magnitude and `err` on the accumulated error,
 // with every input column normalised to maximum 1 (filter_constants.hpp states the
@@ -22,6 +22,11 @@
 // m_x·m_y·m_z·m_j·m_k for insphere), so the bound at the actual maxima is at most the
 // bound at all maxima 1 times S. The filter computes S·K in floating point with r
 // roundings towards zero at worst, so the claim is K·(1 − u)^r ≥ err(1, ..., 1).
+// Nothing uses that m is the *largest* magnitude of its column, only that it bounds every
+// computed magnitude there and is at least the guard's 2^-b: the almost-static filters
+// (include/rstruct/predicates/almost_static_filter.hpp) use the box extents
+// W_i = fl(hi_i − lo_i) ≥ |fl(p_i − q_i)| (monotone rounding) with the same K, the same
+// expression for K·S and the guard applied to W, so they need no constant of their own.
 #include <boost/multiprecision/mpfi.hpp>
 
 #include <cmath>
@@ -31,8 +36,8 @@
 #include <string>
 #include <vector>
 
-#include "predicates/filter_constants.hpp"
-#include "predicates/polynomials.hpp"
+#include "rstruct/predicates/detail/filter_constants.hpp"
+#include "rstruct/predicates/detail/polynomials.hpp"
 
 namespace {
 

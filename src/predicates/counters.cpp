@@ -1,6 +1,6 @@
 #include "rstruct/predicates/counters.hpp"
 
-#include "predicates/counting.hpp"
+#include "rstruct/predicates/detail/counting.hpp"
 
 namespace rstruct::predicates {
 namespace detail {

@@ -1,6 +1,6 @@
-#include "predicates/counting.hpp"
+#include "rstruct/predicates/detail/counting.hpp"
 #include "predicates/exact_stage.hpp"
-#include "predicates/filters.hpp"
+#include "rstruct/predicates/detail/filters.hpp"
 #include "rstruct/predicates/predicates.hpp"
 
 namespace rstruct::predicates {

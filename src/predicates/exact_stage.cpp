@@ -9,12 +9,15 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <array>
+#include <bit>
+#include <climits>
 #include <cmath>
 #include <initializer_list>
 #include <string>
 
-#include "predicates/polynomials.hpp"
+#include "rstruct/predicates/detail/polynomials.hpp"
 #include "predicates/scaled_integer.hpp"
 #include "rstruct/core/error.hpp"
 
@@ -64,18 +67,6 @@ void require_finite_points(const char* where, const PointRefs<N>& pts) {
 
 __extension__ typedef __int128 Int128;
 
-/// x / 2^s as an int64. \pre it has at most 62 bits.
-std::int64_t scaled_int64(double x, int s) {
-  const DyadicParts p = split_double(x);
-  return p.mantissa != 0 ? p.mantissa * (std::int64_t{1} << (p.exponent - s)) : 0;
-}
-
-/// x / 2^s as an Int128. \pre it has at most 125 bits.
-Int128 scaled_int128(double x, int s) {
-  const DyadicParts p = split_double(x);
-  return p.mantissa != 0 ? static_cast<Int128>(p.mantissa) * (static_cast<Int128>(1) << (p.exponent - s)) : 0;
-}
-
 Int128 mul64(std::int64_t a, std::int64_t b) { return static_cast<Int128>(a) * b; }
 
 /// Σ coef_k · m_k exactly, for |coef_k| < 2^62 and |m_k| < 2^126, as high·2^64 + low with
@@ -110,24 +101,101 @@ Int192 det3_int(std::int64_t pz, std::int64_t qz, std::int64_t rz, Int128 m_qr, 
   return sum_of_products({pz, -qz, rz}, {m_qr, m_pr, m_pq});
 }
 
-FastInt to_fast(Int128 v) {
-  const bool negative = v < 0;
-  const auto mag = static_cast<numeric::UInt128>(negative ? -v : v);
-  return FastInt::shifted(static_cast<std::uint64_t>(mag >> 64), 64, negative) +
-         FastInt::shifted(static_cast<std::uint64_t>(mag), 0, negative);
-}
-FastInt to_fast(const Int192& v) {
-  return to_fast(v.high) * FastInt::shifted(1, 64, false) + FastInt::shifted(v.low, 0, false);
-}
+/// A signed integer of 320 bits in two's complement (five 64-bit limbs, least significant
+/// first): the last sum of the lifted determinant, Σ ±lift·det with |lift| < 2^127 and
+/// |det| < 2^190, so every partial sum stays below 2^319 in magnitude.
+class Sum320 {
+ public:
+  /// *this += (subtract ? −1 : 1)·l·d.
+  void add_product(Int128 l, const Int192& d, bool subtract) {
+    const bool l_negative = l < 0;
+    const auto lm = static_cast<numeric::UInt128>(l_negative ? -l : l);
+    // |d| as three limbs: d = high·2^64 + low in two's complement, negated if negative.
+    std::uint64_t dm[3] = {d.low, static_cast<std::uint64_t>(d.high),
+                           static_cast<std::uint64_t>(d.high >> 64)};
+    const bool d_negative = d.high < 0;
+    if (d_negative) {
+      numeric::UInt128 carry = 1;
+      for (std::uint64_t& limb : dm) {
+        carry += static_cast<std::uint64_t>(~limb);
+        limb = static_cast<std::uint64_t>(carry);
+        carry >>= 64;
+      }
+    }
+    const std::uint64_t lw[2] = {static_cast<std::uint64_t>(lm),
+                                 static_cast<std::uint64_t>(lm >> 64)};
+    std::uint64_t p[5] = {};
+    for (int i = 0; i < 2; ++i) {
+      numeric::UInt128 carry = 0;
+      for (int j = 0; j < 3; ++j) {
+        carry += static_cast<numeric::UInt128>(lw[i]) * dm[j] + p[i + j];
+        p[i + j] = static_cast<std::uint64_t>(carry);
+        carry >>= 64;
+      }
+      p[i + 3] = static_cast<std::uint64_t>(carry);
+    }
+    if ((l_negative != d_negative) != subtract) {  // add the two's complement −p
+      numeric::UInt128 carry = 1;
+      for (int k = 0; k < 5; ++k) {
+        carry += static_cast<numeric::UInt128>(limb_[k]) + static_cast<std::uint64_t>(~p[k]);
+        limb_[k] = static_cast<std::uint64_t>(carry);
+        carry >>= 64;
+      }
+    } else {
+      numeric::UInt128 carry = 0;
+      for (int k = 0; k < 5; ++k) {
+        carry += static_cast<numeric::UInt128>(limb_[k]) + p[k];
+        limb_[k] = static_cast<std::uint64_t>(carry);
+        carry >>= 64;
+      }
+    }
+  }
+  int sign() const {
+    if ((limb_[4] >> 63) != 0) return -1;
+    return (limb_[0] | limb_[1] | limb_[2] | limb_[3] | limb_[4]) != 0 ? 1 : 0;
+  }
+
+ private:
+  std::uint64_t limb_[5] = {};
+};
+
+/// The inputs of one call split once (split_double): the finiteness check, the common
+/// unit s (ScaleFinder's, for coordinates only) and the bit bound from one pass, so that
+/// the usual case (nearby inputs, differences below 2^62) needs no second conversion.
+template <std::size_t N>
+struct SplitCoordinates {
+  std::array<DyadicParts, N> part{};
+  int unit = INT_MAX;  // smallest exponent of a non-zero value
+  int top = INT_MIN;   // largest exponent just above a non-zero value's top bit
+  bool finite = true;
+
+  explicit SplitCoordinates(const std::array<double, N>& x) {
+    for (std::size_t i = 0; i < N; ++i) {
+      finite &= ((std::bit_cast<std::uint64_t>(x[i]) >> 52) & 0x7ff) != 0x7ff;
+      part[i] = split_double(x[i]);
+      if (part[i].mantissa != 0) {
+        unit = std::min(unit, part[i].exponent);
+        top = std::max(top, top_exponent(part[i]));
+      }
+    }
+  }
+  /// True iff all inputs are finite, not all zero, and every difference of two scaled
+  /// values has at most `bits` bits.
+  bool fits(int bits) const { return finite && unit != INT_MAX && top - unit + 1 <= bits; }
+  /// Input i / 2^unit. \pre fits(62).
+  std::int64_t scaled(std::size_t i) const {
+    if (part[i].mantissa == 0) return 0;
+    return part[i].mantissa * (std::int64_t{1} << (part[i].exponent - unit));
+  }
+};
 
 /// orient3d when the scaled differences fit in 62 bits (nearby inputs, the usual case):
 /// 2×2 minors are below 2^125 in Int128, the final sum is an Int192.
-int orient3d_int64(const PointRefs<4>& pts, int s) {
+/// \pre s.fits(62); s holds a, b, c, d's coordinates in order.
+int orient3d_int64(const SplitCoordinates<12>& s) {
   std::int64_t t[3][3];
   for (std::size_t j = 0; j < 3; ++j) {
-    for (std::size_t i = 0; i < 3; ++i) {
-      t[j][i] = scaled_int64(pts[j + 1]->c[i], s) - scaled_int64(pts[0]->c[i], s);
-    }
+    for (std::size_t i = 0; i < 3; ++i) t[j][i] = s.scaled(3 * (j + 1) + i) - s.scaled(i);
   }
   const Int128 m_qr = mul64(t[1][0], t[2][1]) - mul64(t[2][0], t[1][1]);
   const Int128 m_pr = mul64(t[0][0], t[2][1]) - mul64(t[2][0], t[0][1]);
@@ -138,34 +206,45 @@ int orient3d_int64(const PointRefs<4>& pts, int s) {
 /// The lifted 4×4 determinant when coordinate differences fit in 62 bits and scaled
 /// weights in 124 bits: minors and lifting heights (< 2^127) in Int128, the 3×3 minors
 /// in Int192, the last four products and sums in FastInt (< 2^318).
-int lifted4_int64(const PointRefs<5>& pts, int s) {
+/// \pre c.fits(62) and w's scaled differences (at unit 2·c.unit) below 2^125; c holds the
+/// coordinates of a, b, c, d, e in order, w their weights (nullptr: all weights zero).
+int lifted4_int64(const SplitCoordinates<15>& c, const SplitCoordinates<5>* w) {
   std::int64_t t[4][3];
   Int128 lift[4];
+  const auto weight = [&](std::size_t j) -> Int128 {
+    const DyadicParts& p = w->part[j];
+    if (p.mantissa == 0) return 0;
+    return static_cast<Int128>(p.mantissa) * (static_cast<Int128>(1) << (p.exponent - 2 * c.unit));
+  };
   for (std::size_t j = 0; j < 4; ++j) {
-    for (std::size_t i = 0; i < 3; ++i) {
-      t[j][i] = scaled_int64(pts[j]->c[i], s) - scaled_int64(pts[4]->c[i], s);
-    }
-    const Int128 tw = scaled_int128(pts[j]->w, 2 * s) - scaled_int128(pts[4]->w, 2 * s);
+    for (std::size_t i = 0; i < 3; ++i) t[j][i] = c.scaled(3 * j + i) - c.scaled(12 + i);
+    const Int128 tw = w != nullptr ? weight(j) - weight(4) : 0;
     lift[j] = (mul64(t[j][0], t[j][0]) + mul64(t[j][1], t[j][1])) + mul64(t[j][2], t[j][2]) - tw;
   }
   auto m = [&](int p, int q) { return mul64(t[p][0], t[q][1]) - mul64(t[q][0], t[p][1]); };
   const Int128 m_ab = m(0, 1), m_ac = m(0, 2), m_ad = m(0, 3), m_bc = m(1, 2), m_bd = m(1, 3),
                m_cd = m(2, 3);
-  const FastInt det_bcd = to_fast(det3_int(t[1][2], t[2][2], t[3][2], m_cd, m_bd, m_bc));
-  const FastInt det_acd = to_fast(det3_int(t[0][2], t[2][2], t[3][2], m_cd, m_ad, m_ac));
-  const FastInt det_abd = to_fast(det3_int(t[0][2], t[1][2], t[3][2], m_bd, m_ad, m_ab));
-  const FastInt det_abc = to_fast(det3_int(t[0][2], t[1][2], t[2][2], m_bc, m_ac, m_ab));
-  const FastInt value = (to_fast(lift[0]) * det_bcd - to_fast(lift[1]) * det_acd) +
-                        (to_fast(lift[2]) * det_abd - to_fast(lift[3]) * det_abc);
+  Sum320 value;
+  value.add_product(lift[0], det3_int(t[1][2], t[2][2], t[3][2], m_cd, m_bd, m_bc), false);
+  value.add_product(lift[1], det3_int(t[0][2], t[2][2], t[3][2], m_cd, m_ad, m_ac), true);
+  value.add_product(lift[2], det3_int(t[0][2], t[1][2], t[3][2], m_bd, m_ad, m_ab), false);
+  value.add_product(lift[3], det3_int(t[0][2], t[1][2], t[2][2], m_bc, m_ac, m_ab), true);
   return value.sign();
 }
 
+/// orient3d with each column scaled by its own unit 2^s_i. det[t] = 2^(s_x+s_y+s_z)·det[t /
+/// 2^s] with a positive factor, so the sign is unchanged, and the integers need
+/// B_x + B_y + B_z + 3 bits (column spans B_i) rather than 3·max B_i + 3: one coordinate
+/// near zero (a subnormal) widens only its own column.
 template <class Z>
-int orient3d_eval(const PointRefs<4>& pts, int s) {
-  const auto v = convert<Z, 4>(pts, false, s);
+int orient3d_eval(const PointRefs<4>& pts, const std::array<int, 3>& unit) {
+  std::array<std::array<Z, 3>, 4> v;
+  for (std::size_t j = 0; j < 4; ++j) {
+    for (std::size_t i = 0; i < 3; ++i) set_scaled(v[j][i], pts[j]->c[i], unit[i]);
+  }
   std::array<std::array<Z, 3>, 3> t;
   for (std::size_t j = 0; j < 3; ++j) {
-    for (std::size_t i = 0; i < 3; ++i) t[j][i] = v.c[j + 1][i] - v.c[0][i];
+    for (std::size_t i = 0; i < 3; ++i) t[j][i] = v[j + 1][i] - v[0][i];
   }
   return sign_int(det3(t[0][0], t[0][1], t[0][2], t[1][0], t[1][1], t[1][2], t[2][0], t[2][1],
                        t[2][2]));
@@ -263,15 +342,34 @@ void require_finite(const char* where, std::initializer_list<double> values) {
   }
 }
 
-int orient3d_exact(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+namespace {
+
+/// orient3d_exact beyond 62-bit differences (or non-finite input); kept out of line so
+/// that its large frame does not slow down the common path.
+[[gnu::noinline]] int orient3d_exact_wide(const Point3& a, const Point3& b, const Point3& c,
+                                          const Point3& d) {
   const WeightedPoint wa{a, 0}, wb{b, 0}, wc{c, 0}, wd{d, 0};
   const PointRefs<4> pts{&wa, &wb, &wc, &wd};
   require_finite_points("orient3d", pts);
-  const ScaleFinder f = find_scale(pts, false);
-  if (f.coordinate_difference_bits() <= 62) return orient3d_int64(pts, f.unit());
-  return dispatch(3 * f.coordinate_difference_bits() + 3, [&](auto tag) {
-    return orient3d_eval<decltype(tag)>(pts, f.unit());
-  });
+  std::array<ScaleFinder, 3> column;
+  for (const WeightedPoint* p : pts) {
+    for (std::size_t i = 0; i < 3; ++i) column[i].add_coordinate(p->c[i]);
+  }
+  const std::array<int, 3> unit{column[0].unit(), column[1].unit(), column[2].unit()};
+  const int bits = column[0].coordinate_difference_bits() +
+                   column[1].coordinate_difference_bits() +
+                   column[2].coordinate_difference_bits() + 3;
+  if (bits <= FastInt::bit_capacity()) return orient3d_eval<FastInt>(pts, unit);
+  if (bits <= WideInt::bit_capacity()) return orient3d_eval<WideInt>(pts, unit);
+  return orient3d_eval<mpz_class>(pts, unit);
+}
+
+}  // namespace
+
+int orient3d_exact(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  const SplitCoordinates<12> split({a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z});
+  if (split.fits(62)) [[likely]] return orient3d_int64(split);
+  return orient3d_exact_wide(a, b, c, d);
 }
 
 int orient2d_exact(const Point3& a, const Point3& b, const Point3& c, int k) {
@@ -284,16 +382,37 @@ int orient2d_exact(const Point3& a, const Point3& b, const Point3& c, int k) {
   });
 }
 
-int lifted4_exact(const WeightedPoint& a, const WeightedPoint& b, const WeightedPoint& c,
-                  const WeightedPoint& d, const WeightedPoint& e) {
+namespace {
+
+/// lifted4_exact beyond the Int128 path (or non-finite input), out of line as for orient3d.
+[[gnu::noinline]] int lifted4_exact_wide(const WeightedPoint& a, const WeightedPoint& b,
+                                         const WeightedPoint& c, const WeightedPoint& d,
+                                         const WeightedPoint& e) {
   const PointRefs<5> pts{&a, &b, &c, &d, &e};
   require_finite_points("power_test", pts);
   const ScaleFinder f = find_scale(pts, true);
-  if (f.coordinate_difference_bits() <= 62 && f.weight_difference_bits() <= 125) {
-    return lifted4_int64(pts, f.unit());
-  }
   return dispatch(3 * f.coordinate_difference_bits() + f.lifted_height_bits() + 5,
                   [&](auto tag) { return lifted4_eval<decltype(tag)>(pts, f.unit()); });
+}
+
+}  // namespace
+
+int lifted4_exact(const WeightedPoint& a, const WeightedPoint& b, const WeightedPoint& c,
+                  const WeightedPoint& d, const WeightedPoint& e) {
+  SplitCoordinates<15> coords({a.c.x, a.c.y, a.c.z, b.c.x, b.c.y, b.c.z, c.c.x, c.c.y, c.c.z,
+                               d.c.x, d.c.y, d.c.z, e.c.x, e.c.y, e.c.z});
+  const SplitCoordinates<5> weights({a.w, b.w, c.w, d.w, e.w});
+  const bool weighted = weights.unit != INT_MAX;
+  if (weighted) {
+    // Weights live at scale 2^(2s) (ScaleFinder::add_weight): s ≤ ⌊exponent / 2⌋.
+    const int half = weights.unit >= 0 ? weights.unit / 2 : -((-weights.unit + 1) / 2);
+    coords.unit = std::min(coords.unit, half);
+  }
+  if (weights.finite && coords.fits(62) &&
+      (!weighted || weights.top - 2 * coords.unit + 1 <= 125)) [[likely]] {
+    return lifted4_int64(coords, weighted ? &weights : nullptr);
+  }
+  return lifted4_exact_wide(a, b, c, d, e);
 }
 
 int coplanar_power_exact(const WeightedPoint& a, const WeightedPoint& b,

@@ -16,9 +16,9 @@
 #include <array>
 #include <string>
 
-#include "predicates/counting.hpp"
+#include "rstruct/predicates/detail/counting.hpp"
 #include "predicates/exact_stage.hpp"
-#include "predicates/filters.hpp"
+#include "rstruct/predicates/detail/filters.hpp"
 #include "predicates/perturbation.hpp"
 #include "predicates/plane_axis.hpp"
 #include "rstruct/core/error.hpp"

@@ -1,9 +1,9 @@
 #include <cmath>
 #include <string>
 
-#include "predicates/counting.hpp"
+#include "rstruct/predicates/detail/counting.hpp"
 #include "predicates/exact_stage.hpp"
-#include "predicates/filters.hpp"
+#include "rstruct/predicates/detail/filters.hpp"
 #include "predicates/plane_axis.hpp"
 #include "rstruct/core/error.hpp"
 #include "rstruct/predicates/predicates.hpp"
@@ -38,17 +38,13 @@ PlaneAxis choose_plane_axis(const Point3& a, const Point3& b, const Point3& c,
                      ": the three points spanning the plane are collinear");
 }
 
-}  // namespace detail
-
-Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
-  const int f = detail::orient3d_filter(a, b, c, d);
-  if (f != detail::kUndecided) {
-    RSTRUCT_PREDICATE_COUNT(orient3d, filter);
-    return static_cast<Sign>(f);
-  }
+Sign orient3d_after_filter(const Point3& a, const Point3& b, const Point3& c,
+                          const Point3& d) {
   RSTRUCT_PREDICATE_COUNT(orient3d, exact);
-  return static_cast<Sign>(detail::orient3d_exact(a, b, c, d));
+  return static_cast<Sign>(orient3d_exact(a, b, c, d));
 }
+
+}  // namespace detail
 
 Sign coplanar_orientation(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
   const detail::PlaneAxis axis = detail::choose_plane_axis(a, b, c, "coplanar_orientation");

@@ -116,4 +116,8 @@ int sign_int(const numeric::BoundedInt<N>& v) {
 /// determinant of inputs whose scaled differences have up to ~75 bits (nearby doubles).
 using FastInt = numeric::BoundedInt<6>;
 
+/// A wider inline integer for orient3d with per-column scales: 1280 bits cover one column
+/// spanning the whole double range (subnormal to 1) next to two ordinary columns.
+using WideInt = numeric::BoundedInt<20>;
+
 }  // namespace rstruct::predicates::detail

@@ -1,40 +1,15 @@
 #include <array>
 #include <string>
 
-#include "predicates/counting.hpp"
+#include "rstruct/predicates/detail/counting.hpp"
 #include "predicates/exact_stage.hpp"
-#include "predicates/filters.hpp"
+#include "rstruct/predicates/detail/filters.hpp"
 #include "predicates/perturbation.hpp"
 #include "rstruct/core/error.hpp"
 #include "rstruct/predicates/predicates.hpp"
 
 namespace rstruct::predicates {
 namespace {
-
-int insphere_sign(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
-                  const Point3& e) {
-  const WeightedPoint wa{a, 0}, wb{b, 0}, wc{c, 0}, wd{d, 0}, we{e, 0};
-  const int f = detail::lifted4_filter<false>(wa, wb, wc, wd, we);
-  if (f != detail::kUndecided) {
-    RSTRUCT_PREDICATE_COUNT(insphere, filter);
-    return f;
-  }
-  const int s = detail::lifted4_exact(wa, wb, wc, wd, we);
-  if (s != 0) RSTRUCT_PREDICATE_COUNT(insphere, exact);
-  return s;
-}
-
-int power_test_sign(const WeightedPoint& a, const WeightedPoint& b, const WeightedPoint& c,
-                    const WeightedPoint& d, const WeightedPoint& e) {
-  const int f = detail::lifted4_filter<true>(a, b, c, d, e);
-  if (f != detail::kUndecided) {
-    RSTRUCT_PREDICATE_COUNT(power_test, filter);
-    return f;
-  }
-  const int s = detail::lifted4_exact(a, b, c, d, e);
-  if (s != 0) RSTRUCT_PREDICATE_COUNT(power_test, exact);
-  return s;
-}
 
 /// Sign of the perturbed predicate when the unperturbed one is zero. The predicate is
 /// −det[(p, |p|² − w_p, 1)] (rows p_0..p_4 = a..e); lowering height k by ε^(id_k+1) adds
@@ -57,37 +32,49 @@ Sign perturbed_lifted4(const std::array<const Point3*, 5>& p,
 
 }  // namespace
 
-Sign insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
-              const Point3& e) {
-  const int s = insphere_sign(a, b, c, d, e);
-  if (s == 0) RSTRUCT_PREDICATE_COUNT(insphere, exact);
-  return static_cast<Sign>(s);
+// The filter stage of each predicate is inline in predicates.hpp; these are the stages
+// after it, out of line.
+namespace detail {
+
+Sign insphere_after_filter(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                           const Point3& e) {
+  RSTRUCT_PREDICATE_COUNT(insphere, exact);
+  return static_cast<Sign>(lifted4_exact({a, 0}, {b, 0}, {c, 0}, {d, 0}, {e, 0}));
 }
 
-Sign power_test(const WeightedPoint& a, const WeightedPoint& b, const WeightedPoint& c,
-                const WeightedPoint& d, const WeightedPoint& e) {
-  const int s = power_test_sign(a, b, c, d, e);
-  if (s == 0) RSTRUCT_PREDICATE_COUNT(power_test, exact);
-  return static_cast<Sign>(s);
+Sign power_test_after_filter(const WeightedPoint& a, const WeightedPoint& b,
+                             const WeightedPoint& c, const WeightedPoint& d,
+                             const WeightedPoint& e) {
+  RSTRUCT_PREDICATE_COUNT(power_test, exact);
+  return static_cast<Sign>(lifted4_exact(a, b, c, d, e));
 }
 
-Sign insphere_sos(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
-                  const Point3& e, std::uint32_t ia, std::uint32_t ib, std::uint32_t ic,
-                  std::uint32_t id, std::uint32_t ie) {
-  const int s = insphere_sign(a, b, c, d, e);
-  if (s != 0) return static_cast<Sign>(s);
+Sign insphere_sos_after_filter(const Point3& a, const Point3& b, const Point3& c,
+                               const Point3& d, const Point3& e, std::uint32_t ia,
+                               std::uint32_t ib, std::uint32_t ic, std::uint32_t id,
+                               std::uint32_t ie) {
+  const int s = lifted4_exact({a, 0}, {b, 0}, {c, 0}, {d, 0}, {e, 0});
+  if (s != 0) {
+    RSTRUCT_PREDICATE_COUNT(insphere, exact);
+    return static_cast<Sign>(s);
+  }
   RSTRUCT_PREDICATE_COUNT(insphere, perturbed);
   return perturbed_lifted4({&a, &b, &c, &d, &e}, {ia, ib, ic, id, ie}, "insphere_sos");
 }
 
-Sign power_test_sos(const WeightedPoint& a, const WeightedPoint& b, const WeightedPoint& c,
-                    const WeightedPoint& d, const WeightedPoint& e, std::uint32_t ia,
-                    std::uint32_t ib, std::uint32_t ic, std::uint32_t id, std::uint32_t ie) {
-  const int s = power_test_sign(a, b, c, d, e);
-  if (s != 0) return static_cast<Sign>(s);
+Sign power_test_sos_after_filter(const WeightedPoint& a, const WeightedPoint& b,
+                                 const WeightedPoint& c, const WeightedPoint& d,
+                                 const WeightedPoint& e, std::uint32_t ia, std::uint32_t ib,
+                                 std::uint32_t ic, std::uint32_t id, std::uint32_t ie) {
+  const int s = lifted4_exact(a, b, c, d, e);
+  if (s != 0) {
+    RSTRUCT_PREDICATE_COUNT(power_test, exact);
+    return static_cast<Sign>(s);
+  }
   RSTRUCT_PREDICATE_COUNT(power_test, perturbed);
   return perturbed_lifted4({&a.c, &b.c, &c.c, &d.c, &e.c}, {ia, ib, ic, id, ie},
                            "power_test_sos");
 }
 
+}  // namespace detail
 }  // namespace rstruct::predicates

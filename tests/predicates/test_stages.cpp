@@ -8,7 +8,7 @@
 
 #include "predicates/cases.hpp"
 #include "predicates/exact_stage.hpp"
-#include "predicates/filters.hpp"
+#include "rstruct/predicates/detail/filters.hpp"
 #include "rstruct/predicates/counters.hpp"
 #include "rstruct/predicates/predicates.hpp"
 

@@ -42,37 +42,99 @@
 /// Precondition of every predicate: finite coordinates and weights. A NaN or infinity
 /// throws rstruct::InvalidInput (checked on the slow path only, so a filter that decides
 /// never looks). Counters of how often each stage decides: predicates/counters.hpp.
+///
+/// orient3d, insphere, power_test and their _sos variants are inline: the filter (the
+/// common case) runs in the caller, the exact and perturbation stages are out of line
+/// (detail::*_after_filter), as in Geogram and CGAL.
 
 #include <cstdint>
 
 #include "rstruct/geometry/vec3.hpp"
+#include "rstruct/predicates/detail/counting.hpp"
+#include "rstruct/predicates/detail/filters.hpp"
 #include "rstruct/predicates/sign.hpp"
 
 namespace rstruct::predicates {
 
+namespace detail {
+/// The stages after the filter (exact, then perturbation), out of line; each counts the
+/// stage that decides. \pre the filter of the same predicate returned kUndecided.
+Sign orient3d_after_filter(const Point3& a, const Point3& b, const Point3& c,
+                          const Point3& d);
+Sign insphere_after_filter(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                           const Point3& e);
+Sign power_test_after_filter(const WeightedPoint& a, const WeightedPoint& b,
+                             const WeightedPoint& c, const WeightedPoint& d,
+                             const WeightedPoint& e);
+Sign insphere_sos_after_filter(const Point3& a, const Point3& b, const Point3& c,
+                               const Point3& d, const Point3& e, std::uint32_t ia,
+                               std::uint32_t ib, std::uint32_t ic, std::uint32_t id,
+                               std::uint32_t ie);
+Sign power_test_sos_after_filter(const WeightedPoint& a, const WeightedPoint& b,
+                                 const WeightedPoint& c, const WeightedPoint& d,
+                                 const WeightedPoint& e, std::uint32_t ia, std::uint32_t ib,
+                                 std::uint32_t ic, std::uint32_t id, std::uint32_t ie);
+}  // namespace detail
+
 /// Orientation of four points. Exact; zero iff coplanar.
-Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
+inline Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  const int f = detail::orient3d_filter(a, b, c, d);
+  if (f != detail::kUndecided) [[likely]] {
+    RSTRUCT_PREDICATE_COUNT(orient3d, filter);
+    return static_cast<Sign>(f);
+  }
+  return detail::orient3d_after_filter(a, b, c, d);
+}
 
 /// In-sphere test, unperturbed (may return zero when the five points are cospherical).
-Sign insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
-              const Point3& e);
+inline Sign insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                     const Point3& e) {
+  const int f = detail::insphere_filter(a, b, c, d, e);
+  if (f != detail::kUndecided) [[likely]] {
+    RSTRUCT_PREDICATE_COUNT(insphere, filter);
+    return static_cast<Sign>(f);
+  }
+  return detail::insphere_after_filter(a, b, c, d, e);
+}
 
 /// Power test of e against the orthosphere of a, b, c, d; unperturbed.
-Sign power_test(const WeightedPoint& a, const WeightedPoint& b, const WeightedPoint& c,
-                const WeightedPoint& d, const WeightedPoint& e);
+inline Sign power_test(const WeightedPoint& a, const WeightedPoint& b, const WeightedPoint& c,
+                       const WeightedPoint& d, const WeightedPoint& e) {
+  const int f = detail::lifted4_filter<true>(a, b, c, d, e);
+  if (f != detail::kUndecided) [[likely]] {
+    RSTRUCT_PREDICATE_COUNT(power_test, filter);
+    return static_cast<Sign>(f);
+  }
+  return detail::power_test_after_filter(a, b, c, d, e);
+}
 
 /// Perturbed in-sphere test (all weights zero).
 /// \pre orient3d(a, b, c, d) != 0 and the ids are pairwise distinct. Never returns zero.
-Sign insphere_sos(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
-                  const Point3& e, std::uint32_t ia, std::uint32_t ib, std::uint32_t ic,
-                  std::uint32_t id, std::uint32_t ie);
+inline Sign insphere_sos(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                         const Point3& e, std::uint32_t ia, std::uint32_t ib, std::uint32_t ic,
+                         std::uint32_t id, std::uint32_t ie) {
+  const int f = detail::insphere_filter(a, b, c, d, e);
+  if (f != detail::kUndecided) [[likely]] {
+    RSTRUCT_PREDICATE_COUNT(insphere, filter);
+    return static_cast<Sign>(f);
+  }
+  return detail::insphere_sos_after_filter(a, b, c, d, e, ia, ib, ic, id, ie);
+}
 
 /// Perturbed power test.
 /// \pre orient3d(a.c, b.c, c.c, d.c) != 0 and the ids are pairwise distinct.
 /// Never returns zero.
-Sign power_test_sos(const WeightedPoint& a, const WeightedPoint& b, const WeightedPoint& c,
-                    const WeightedPoint& d, const WeightedPoint& e, std::uint32_t ia,
-                    std::uint32_t ib, std::uint32_t ic, std::uint32_t id, std::uint32_t ie);
+inline Sign power_test_sos(const WeightedPoint& a, const WeightedPoint& b,
+                           const WeightedPoint& c, const WeightedPoint& d,
+                           const WeightedPoint& e, std::uint32_t ia, std::uint32_t ib,
+                           std::uint32_t ic, std::uint32_t id, std::uint32_t ie) {
+  const int f = detail::lifted4_filter<true>(a, b, c, d, e);
+  if (f != detail::kUndecided) [[likely]] {
+    RSTRUCT_PREDICATE_COUNT(power_test, filter);
+    return static_cast<Sign>(f);
+  }
+  return detail::power_test_sos_after_filter(a, b, c, d, e, ia, ib, ic, id, ie);
+}
 
 /// Perturbed power test of e against the orthocircle of three coplanar weighted points,
 /// inside their common plane: positive iff e is in conflict with the triangle abc of the

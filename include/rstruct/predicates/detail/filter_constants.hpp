@@ -21,6 +21,10 @@
 /// the guard also keeps K·S a normal number. Overflow needs no guard: with no divisions,
 /// an overflow anywhere leaves D̃ = ±inf or NaN (rejected), and an overflowing K·S = +inf
 /// never decides.
+///
+/// The almost-static filters (almost_static_filter.hpp) reuse kOrient3d and kInsphere with
+/// the extents of a box holding every input as the column maxima: any upper bounds of the
+/// computed column magnitudes satisfy the derivation (see proofs/filter_bounds.cpp).
 
 namespace rstruct::predicates::detail::filter {
 

@@ -8,8 +8,8 @@
 
 #include <cmath>
 
-#include "predicates/filter_constants.hpp"
-#include "predicates/polynomials.hpp"
+#include "rstruct/predicates/detail/filter_constants.hpp"
+#include "rstruct/predicates/detail/polynomials.hpp"
 #include "rstruct/geometry/vec3.hpp"
 
 namespace rstruct::predicates::detail {
@@ -75,16 +75,19 @@ inline int orient2d_filter(const Point3& a, const Point3& b, const Point3& c, in
 /// Sign of −det[(p − e, |p − e|² − (w_p − w_e))] for p = a, b, c, d (power test; with
 /// `weighted` false the weights are ignored: insphere).
 template <bool weighted>
-int lifted4_filter(const WeightedPoint& a, const WeightedPoint& b, const WeightedPoint& c,
-                   const WeightedPoint& d, const WeightedPoint& e) {
-  const Point3 ta = a.c - e.c, tb = b.c - e.c, tc = c.c - e.c, td = d.c - e.c;
+int lifted4_filter_points(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                          const Point3& e, double aw, double bw, double cw, double dw,
+                          double ew) {
+  const Point3 ta = a - e, tb = b - e, tc = c - e, td = d - e;
   const double mx = abs_max4(ta.x, tb.x, tc.x, td.x);
   const double my = abs_max4(ta.y, tb.y, tc.y, td.y);
   const double mz = abs_max4(ta.z, tb.z, tc.z, td.z);
   const double big = max2(max2(mx, my), mz);
   double wa = 0, wb = 0, wc = 0, wd = 0;
   if constexpr (weighted) {
-    wa = a.w - e.w, wb = b.w - e.w, wc = c.w - e.w, wd = d.w - e.w;
+    wa = aw - ew, wb = bw - ew, wc = cw - ew, wd = dw - ew;
+  } else {
+    (void)aw, (void)bw, (void)cw, (void)dw, (void)ew;
   }
   const LiftedRows<double> rows{ta.x, ta.y, ta.z, lifted_height(ta.x, ta.y, ta.z, wa),
                                 tb.x, tb.y, tb.z, lifted_height(tb.x, tb.y, tb.z, wb),
@@ -99,6 +102,18 @@ int lifted4_filter(const WeightedPoint& a, const WeightedPoint& b, const Weighte
   } else {
     return decide(value, filter::kInsphere * mx * my * mz * (big * big), ok);
   }
+}
+
+template <bool weighted>
+int lifted4_filter(const WeightedPoint& a, const WeightedPoint& b, const WeightedPoint& c,
+                   const WeightedPoint& d, const WeightedPoint& e) {
+  return lifted4_filter_points<weighted>(a.c, b.c, c.c, d.c, e.c, a.w, b.w, c.w, d.w, e.w);
+}
+
+/// lifted4_filter<false> on unweighted points.
+inline int insphere_filter(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                           const Point3& e) {
+  return lifted4_filter_points<false>(a, b, c, d, e, 0, 0, 0, 0, 0);
 }
 
 /// Sign of the projected lifted determinant det[(p_u − e_u, p_v − e_v, h_p)] for

@@ -1,0 +1,114 @@
+#pragma once
+/// \file
+/// Almost-static filters (Devillers & Pion, "Efficient exact geometric predicates for
+/// Delaunay triangulations", ALENEX 2003, section 3): when every input point of a
+/// predicate is known to lie in a box, the semi-static error bound K·S of
+/// detail/filter_constants.hpp is evaluated once, with the box's extents in place of the
+/// column maxima, so that a call costs the plain floating-point evaluation and one
+/// comparison. A call the bound cannot decide goes to the semi-static predicate of
+/// predicates.hpp (its own filter, then the exact stage), so every answer is exact.
+///
+/// Why the constants carry over (no new constant): proofs/filter_bounds.cpp normalises
+/// each column of differences by an upper bound m of its computed magnitudes and bounds
+/// the error by K times the product S of those m; any upper bound serves, and for p, q in
+/// the box [lo, hi] the computed |fl(p_i − q_i)| ≤ fl(hi_i − lo_i) = W_i because rounding to
+/// nearest is monotone. The guards of filter_constants.hpp then apply to W: with some
+/// W_i below the guard's minimum the bound is +inf (never decides). An overflowing bound
+/// is +inf as well, and a call whose value is not finite is not decided.
+
+#include <cmath>
+#include <initializer_list>
+#include <string>
+
+#include "rstruct/core/assert.hpp"
+#include "rstruct/core/error.hpp"
+#include "rstruct/geometry/vec3.hpp"
+#include "rstruct/predicates/detail/filters.hpp"
+#include "rstruct/predicates/predicates.hpp"
+
+namespace rstruct::predicates {
+
+/// orient3d and insphere for inputs in a box fixed in advance (e.g. the bounding box of a
+/// triangulation's points). Same results as the free functions of predicates.hpp.
+class AlmostStaticFilter {
+ public:
+  /// Filters for points p with lo ≤ p ≤ hi coordinate-wise.
+  /// \throws InvalidInput if a bound is not finite or lo > hi on some axis.
+  AlmostStaticFilter(const Point3& lo, const Point3& hi) : lo_(lo), hi_(hi) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (!std::isfinite(lo[i]) || !std::isfinite(hi[i]) || lo[i] > hi[i]) {
+        throw InvalidInput("AlmostStaticFilter: the box [lo, hi] is empty or not finite (axis " +
+                           std::to_string(i) + ")");
+      }
+    }
+    const double wx = hi.x - lo.x, wy = hi.y - lo.y, wz = hi.z - lo.z;
+    const double smallest = detail::min3(wx, wy, wz);
+    const double big = detail::max2(detail::max2(wx, wy), wz);
+    // The same floating-point expressions as the semi-static filters (filters.hpp), so
+    // the constants' rounding allowance (bound_roundings) covers them.
+    if (smallest >= detail::filter::kGuardDegree3.min_magnitude) {
+      orient3d_bound_ = detail::filter::kOrient3d * wx * wy * wz;
+    }
+    if (smallest >= detail::filter::kGuardDegree5.min_magnitude) {
+      insphere_bound_ = detail::filter::kInsphere * wx * wy * wz * (big * big);
+    }
+  }
+
+  /// predicates::orient3d(a, b, c, d). \pre a, b, c, d lie in the box (checked, throwing
+  /// InvalidInput, when built with -Dchecks=expensive or above).
+  Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const {
+    if constexpr (check_level() >= 2) require_in_box({&a, &b, &c, &d});
+    const double value = detail::det3(b.x - a.x, b.y - a.y, b.z - a.z, c.x - a.x, c.y - a.y,
+                                      c.z - a.z, d.x - a.x, d.y - a.y, d.z - a.z);
+    const int f = detail::decide(value, orient3d_bound_, std::fabs(value) <= kMaxFinite);
+    if (f != detail::kUndecided) [[likely]] {
+      RSTRUCT_PREDICATE_COUNT(orient3d, filter);
+      return static_cast<Sign>(f);
+    }
+    return predicates::orient3d(a, b, c, d);
+  }
+
+  /// predicates::insphere(a, b, c, d, e). \pre as for orient3d.
+  Sign insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                const Point3& e) const {
+    if constexpr (check_level() >= 2) require_in_box({&a, &b, &c, &d, &e});
+    const Point3 ta = a - e, tb = b - e, tc = c - e, td = d - e;
+    using detail::lifted_height;
+    const detail::LiftedRows<double> rows{
+        ta.x, ta.y, ta.z, lifted_height(ta.x, ta.y, ta.z, 0.0),
+        tb.x, tb.y, tb.z, lifted_height(tb.x, tb.y, tb.z, 0.0),
+        tc.x, tc.y, tc.z, lifted_height(tc.x, tc.y, tc.z, 0.0),
+        td.x, td.y, td.z, lifted_height(td.x, td.y, td.z, 0.0)};
+    const double value = detail::lifted_det4_negated(rows);
+    const int f = detail::decide(value, insphere_bound_, std::fabs(value) <= kMaxFinite);
+    if (f != detail::kUndecided) [[likely]] {
+      RSTRUCT_PREDICATE_COUNT(insphere, filter);
+      return static_cast<Sign>(f);
+    }
+    return predicates::insphere(a, b, c, d, e);
+  }
+
+  /// The precomputed bounds (+inf: that filter never decides), for tests and reports.
+  double orient3d_bound() const { return orient3d_bound_; }
+  double insphere_bound() const { return insphere_bound_; }
+
+ private:
+  static constexpr double kMaxFinite = 0x1.fffffffffffffp1023;
+
+  void require_in_box(std::initializer_list<const Point3*> points) const {
+    for (const Point3* p : points) {
+      for (std::size_t i = 0; i < 3; ++i) {
+        if (!((*p)[i] >= lo_[i] && (*p)[i] <= hi_[i])) {
+          throw InvalidInput("AlmostStaticFilter: input point outside the filter's box (axis " +
+                             std::to_string(i) + ")");
+        }
+      }
+    }
+  }
+
+  Point3 lo_, hi_;
+  double orient3d_bound_ = HUGE_VAL;
+  double insphere_bound_ = HUGE_VAL;
+};
+
+}  // namespace rstruct::predicates
