@@ -77,6 +77,16 @@ void Builder::run() {
     t_.order_.resize(n);
     std::iota(t_.order_.begin(), t_.order_.end(), 0u);
   }
+  if (weights_ == nullptr && n > 0) {
+    Point3 lo = t_.points_[0], hi = t_.points_[0];
+    for (const Point3& q : t_.points_) {
+      for (std::size_t i = 0; i < 3; ++i) {
+        lo[i] = std::min(lo[i], q[i]);
+        hi[i] = std::max(hi[i], q[i]);
+      }
+    }
+    box_filter_.emplace(lo, hi);
+  }
   const bool swap_first = choose_first_tetrahedron();
   // Points stored in insertion order make the construction's memory accesses local
   // (vertex ids are then ranks; input ids come back at the end). Not while a caller
@@ -287,6 +297,11 @@ bool Builder::in_conflict(CellId c, VertexId p) {
   ++t_.stats_.power_test_calls;
   if (inf < 0) {
     if (weights_ == nullptr) {
+      if (box_filter_) {
+        const int f = box_filter_->insphere_filter(points_[k.v[0]], points_[k.v[1]],
+                                                   points_[k.v[2]], points_[k.v[3]], points_[p]);
+        if (f != pr::detail::kUndecided) [[likely]] return f > 0;
+      }
       return pr::insphere_sos(points_[k.v[0]], points_[k.v[1]], points_[k.v[2]],
                               points_[k.v[3]], points_[p], input_id(k.v[0]),
                               input_id(k.v[1]), input_id(k.v[2]), input_id(k.v[3]),

@@ -4,8 +4,10 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "rstruct/predicates/almost_static_filter.hpp"
 #include "rstruct/triangulation/regular_triangulation_3.hpp"
 
 namespace rstruct::triangulation {
@@ -61,6 +63,10 @@ class Builder {
   const TriangulationOptions& options_;
   const Point3* points_;
   const double* weights_;  // nullptr: Delaunay fast path
+  /// Delaunay only: the almost-static insphere filter over the points' bounding box, tried
+  /// before the semi-static predicate (a decided sign is exact, and the perturbation only
+  /// matters where the exact sign is zero, which the filter never claims).
+  std::optional<predicates::AlmostStaticFilter> box_filter_;
   /// Two bits per cell (a Mark), 32 cells per word: 1/4 byte per cell of peak memory.
   std::vector<std::uint64_t> marks_;
   unsigned mark(CellId c) const {

@@ -71,6 +71,16 @@ class AlmostStaticFilter {
   /// predicates::insphere(a, b, c, d, e). \pre as for orient3d.
   Sign insphere(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                 const Point3& e) const {
+    const int f = insphere_filter(a, b, c, d, e);
+    if (f != detail::kUndecided) [[likely]] return static_cast<Sign>(f);
+    return predicates::insphere(a, b, c, d, e);
+  }
+
+  /// The filter stage alone: −1 or +1 (the sign of insphere(a, b, c, d, e), hence also of
+  /// any perturbed version) when the box bound decides, detail::kUndecided otherwise.
+  /// \pre as for orient3d.
+  int insphere_filter(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                      const Point3& e) const {
     if constexpr (check_level() >= 2) require_in_box({&a, &b, &c, &d, &e});
     const Point3 ta = a - e, tb = b - e, tc = c - e, td = d - e;
     using detail::lifted_height;
@@ -81,11 +91,8 @@ class AlmostStaticFilter {
         td.x, td.y, td.z, lifted_height(td.x, td.y, td.z, 0.0)};
     const double value = detail::lifted_det4_negated(rows);
     const int f = detail::decide(value, insphere_bound_, std::fabs(value) <= kMaxFinite);
-    if (f != detail::kUndecided) [[likely]] {
-      RSTRUCT_PREDICATE_COUNT(insphere, filter);
-      return static_cast<Sign>(f);
-    }
-    return predicates::insphere(a, b, c, d, e);
+    if (f != detail::kUndecided) [[likely]] RSTRUCT_PREDICATE_COUNT(insphere, filter);
+    return f;
   }
 
   /// The precomputed bounds (+inf: that filter never decides), for tests and reports.
