@@ -434,6 +434,19 @@ int collinear_power_exact(const WeightedPoint& a, const WeightedPoint& b,
 }
 
 int squared_distance_difference_exact(const Point3& x, const Point3& p, const Point3& q) {
+  // Nearby inputs (the usual case): with every scaled coordinate below 2^60 in magnitude,
+  // the differences are below 2^61, their squares below 2^122 and the signed sum of six
+  // squares below 2^125, all exact in Int128.
+  const SplitCoordinates<9> s({x.x, x.y, x.z, p.x, p.y, p.z, q.x, q.y, q.z});
+  if (s.fits(60)) [[likely]] {
+    Int128 sum = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::int64_t dp = s.scaled(i) - s.scaled(3 + i);
+      const std::int64_t dq = s.scaled(i) - s.scaled(6 + i);
+      sum += mul64(dp, dp) - mul64(dq, dq);
+    }
+    return (sum > 0) - (sum < 0);
+  }
   return power_difference_exact(x, WeightedPoint{p, 0}, WeightedPoint{q, 0});
 }
 
