@@ -11,6 +11,7 @@
 #include "reduction.hpp"
 #include "rstruct/core/assert.hpp"
 #include "rstruct/core/error.hpp"
+#include "rstruct/core/parallel.hpp"
 #include "rstruct/core/stopwatch.hpp"
 #include "subgradient.hpp"
 
@@ -250,8 +251,7 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
     budget.deadline = now + share * std::max(0.0, options.time_limit - now);
     budget.seed = options.seed * 0x9E3779B97F4A7C15ULL + k;
     budget.streams = options.local_search_streams;
-    budget.threads = options.threads != 0 ? options.threads
-                                          : std::max(1u, std::thread::hardware_concurrency());
+    budget.threads = thread_count(options.threads, static_cast<std::size_t>(budget.streams));
     budget.subgradient_iterations = options.max_subgradient_iterations;
     if (options.max_local_search_iterations > 0) {
       budget.local_search_iterations = std::max<std::int64_t>(
