@@ -16,6 +16,7 @@
 #include "rstruct/medial/boundary_vertices.hpp"
 #include "rstruct/predicates/predicates.hpp"
 #include "rstruct/triangulation/regular_triangulation_3.hpp"
+#include "medial/circumcentre_side.hpp"
 #include "medial/union_triangulation.hpp"
 
 namespace rstruct::medial {
@@ -87,6 +88,11 @@ struct ConeFace {
   std::uint32_t p = 0;
   std::uint32_t q = 0;
   Sign inside = Sign::zero;
+  /// The boundary vertex at the other end of the arc of S_p ∩ S_q that leaves the site
+  /// across this face (kNone if none was found), and whether that arc is shorter than a
+  /// half circle (see link_arc_partners).
+  std::uint32_t partner = kNone;
+  bool short_arc = false;
 };
 
 /// A Delaunay vertex of V: its point and every ball it lies on. Points of V from different
@@ -120,6 +126,114 @@ std::vector<ConeFace> cone_faces(const Site& site, std::span<const Ball> balls) 
   return faces;
 }
 
+/// The side of the Voronoi vertex z of the Delaunay cell `cell` of V relative to the plane
+/// of the face (s; p, q) of site s's normal cone: the sign of orient3d(site s, c_p, c_q, z),
+/// decided as it is for the exact boundary vertices, of which the sites are roundings.
+///
+/// If the cell has another site s' on the spheres p and q, then s and s' lie on the circle
+/// S_p ∩ S_q, so z (equidistant from both) lies on their bisector plane, which contains the
+/// axis c_p c_q, as does the face plane. Two planes through one line: z's side of the face
+/// plane is fixed by which half of the bisector plane z is on, z − axis towards s and s'
+/// (then z is on the side of s') or away from them (then on the other side). With the
+/// rounded sites, z's position around the axis is at the mercy of their 10⁻¹⁶ errors when z
+/// is near the axis (as it is where four spheres almost meet in a point and their boundary
+/// vertices come in clusters 10⁻⁶ … 10⁻¹⁴ apart), while its distance from the axis is not.
+/// So the side is sign(λ) · orient3d(s, c_p, c_q, s'), λ > 0 iff z and s lie on the same side
+/// of the plane through the axis with normal (c_q − c_p) × (s' − s). Two or more such s'
+/// put z on the axis: zero. Without such s', the side is circumcentre_side on the cell.
+/// All signs are exact on the double inputs.
+Sign cone_face_side(const RegularTriangulation3& del, CellId cell, std::span<const Site> sites,
+                    std::uint32_t s, const ConeFace& face, std::span<const Ball> balls) {
+  const std::uint32_t p = face.p, q = face.q;
+  const auto vs = del.vertices(cell);
+  const auto nv = static_cast<std::uint32_t>(sites.size());
+  std::uint32_t partner = kNone;
+  int partners = 0;
+  for (auto t : vs) {
+    if (t != s && t < nv && sites[t].tags.contains(p) && sites[t].tags.contains(q)) {
+      partner = t;
+      ++partners;
+    }
+  }
+  const Point3& a = sites[s].point;
+  const Point3& cp = balls[p].c;
+  const Point3& cq = balls[q].c;
+  if (partners == 0) {
+    const Sign side = circumcentre_side(del.point(vs[0]), del.point(vs[1]), del.point(vs[2]),
+                                        del.point(vs[3]), a, cp, cq);
+    if (to_int(side * face.inside) >= 0 || !face.short_arc) return side;
+    // z beyond the face means the Voronoi ball leaves U along the arc from s, so the arc
+    // comes closer to z than s: for exact boundary vertices and a cell that is Delaunay,
+    // z's nearest point on the circle lies in the first half of that arc, which (the arc
+    // being shorter than a half circle) is on s's side of the axis. z on the other side
+    // (as the Voronoi vertices of a whole cluster's far side are, when the rounding of V
+    // decides which cluster point is nearer) is therefore within the cone for exact V.
+    const Sign half = circumcentre_radial_side(del.point(vs[0]), del.point(vs[1]),
+                                               del.point(vs[2]), del.point(vs[3]), a, cp, cq);
+    return half == Sign::positive ? side : Sign::zero;
+  }
+  if (partners > 1) return Sign::zero;
+  const Point3& b = sites[partner].point;
+  const Sign z_half = circumcentre_side(del.point(vs[0]), del.point(vs[1]), del.point(vs[2]),
+                                        del.point(vs[3]), cp, cp, cq, a, b);
+  const Sign s_half = point_side(a, cp, cp, cq, a, b);
+  return z_half * s_half * predicates::orient3d(a, cp, cq, b);
+}
+
+/// For every cone face (a; p, q), the arc of ∂U on the circle S_p ∩ S_q that leaves a on
+/// the face's outer side, and the site at its other end: the next site on that circle in
+/// that direction (the boundary vertices on a circle are exactly where its arcs of ∂U
+/// begin and end). Angles around the circle's axis are doubles, a documented
+/// approximation: they order sites whose separation exceeds the rounding of V.
+void link_arc_partners(std::vector<Site>& sites, const std::vector<bool>& live,
+                       std::span<const Ball> balls) {
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> on_circle;
+  for (std::uint32_t v = 0; v < sites.size(); ++v) {
+    if (!live[v]) continue;
+    const IdSet& t = sites[v].tags;
+    for (int i = 0; i < t.size; ++i) {
+      for (int j = i + 1; j < t.size; ++j) {
+        on_circle[(std::uint64_t{t.id[i]} << 32) | t.id[j]].push_back(v);
+      }
+    }
+  }
+  for (std::uint32_t v = 0; v < sites.size(); ++v) {
+    if (!live[v]) continue;
+    for (ConeFace& f : sites[v].faces) {
+      const auto& members = on_circle[(std::uint64_t{f.p} << 32) | f.q];
+      const Point3& cp = balls[f.p].c;
+      const Vec3 axis = balls[f.q].c - cp;
+      const Point3& a = sites[v].point;
+      // An orthonormal frame around the axis with e1 towards a.
+      const Vec3 along = (dot(a - cp, axis) / dot(axis, axis)) * axis;
+      Vec3 e1 = (a - cp) - along;
+      const double len1 = std::sqrt(dot(e1, e1));
+      if (!(len1 > 0)) continue;
+      e1 = (1.0 / len1) * e1;
+      Vec3 e2 = cross(axis, e1);
+      e2 = (1.0 / std::sqrt(dot(e2, e2))) * e2;
+      // Moving from a along +e2 (increasing angle) leaves the cone iff orient3d(a, c_p,
+      // c_q, a + t e2) has the sign opposite to `inside`; e2 is normal to the face plane.
+      const double turn = dot(cross(cp - a, balls[f.q].c - a), e2);
+      const double dir = (turn > 0) == (f.inside == Sign::positive) ? -1.0 : 1.0;
+      double best = 7.0;
+      std::uint32_t partner = kNone;
+      for (std::uint32_t m : members) {
+        if (m == v) continue;
+        const Vec3 r = sites[m].point - cp;
+        double angle = dir * std::atan2(dot(r, e2), dot(r, e1));
+        if (angle <= 0) angle += 2 * M_PI;
+        if (angle < best) {
+          best = angle;
+          partner = m;
+        }
+      }
+      f.partner = partner;
+      f.short_arc = partner != kNone && best < M_PI;
+    }
+  }
+}
+
 // ---- clipping --------------------------------------------------------------------------
 
 struct PolyVertex {
@@ -136,6 +250,8 @@ struct SideOrigin {
 };
 
 struct Plane {
+  std::uint32_t site = kNone;  ///< the boundary vertex whose cone face this is
+  const ConeFace* face = nullptr;
   std::array<Point3, 3> corner;
   IdSet centres;
   Sign inside = Sign::zero;  ///< orient3d(corners, the third centre of the cone)
@@ -144,8 +260,9 @@ struct Plane {
 
 class Clipper {
  public:
-  Clipper(std::span<const Ball> balls, std::span<const Site> sites)
-      : balls_(balls), sites_(sites) {}
+  Clipper(std::span<const Ball> balls, std::span<const Site> sites,
+          const RegularTriangulation3& del)
+      : balls_(balls), sites_(sites), del_(del) {}
 
   /// Clips the polygon of the Voronoi face F(a, b) by the faces of a's normal cone that
   /// contain an axis c_p c_q lying in F(a, b), i.e. whose balls p, q both a and b lie on:
@@ -159,6 +276,8 @@ class Clipper {
       if (poly.empty()) return;
       if (!tab.contains(face.p) || !tab.contains(face.q)) continue;
       Plane plane;
+      plane.site = a;
+      plane.face = &face;
       plane.corner = {sa.point, balls_[face.p].c, balls_[face.q].c};
       plane.centres.insert(face.p);
       plane.centres.insert(face.q);
@@ -169,9 +288,16 @@ class Clipper {
   }
 
  private:
-  int side(const Plane& plane, const Point3& x) const {
-    return to_int(predicates::orient3d(plane.corner[0], plane.corner[1], plane.corner[2], x) *
-                  plane.inside);
+  /// A Voronoi vertex is decided on its cell (cone_face_side), a centre is an input point;
+  /// a cut vertex is a rounded construction, tested as such (orient3d on the double).
+  int side(const Plane& plane, const PolyVertex& x) const {
+    Sign s;
+    if (x.key.v[0] == kTet) {
+      s = cone_face_side(del_, x.key.v[1], sites_, plane.site, *plane.face, balls_);
+    } else {
+      s = predicates::orient3d(plane.corner[0], plane.corner[1], plane.corner[2], x.p);
+    }
+    return to_int(s * plane.inside);
   }
 
   Key cut_key(const SideOrigin& o, const Plane& plane, std::uint32_t a, std::uint32_t b,
@@ -200,7 +326,7 @@ class Clipper {
     bool any_out = false;
     bool any_in = false;
     for (std::size_t i = 0; i < n; ++i) {
-      s[i] = side(plane, poly[i].p);
+      s[i] = side(plane, poly[i]);
       any_out |= s[i] < 0;
       any_in |= s[i] > 0;
     }
@@ -258,6 +384,7 @@ class Clipper {
 
   std::span<const Ball> balls_;
   std::span<const Site> sites_;
+  const RegularTriangulation3& del_;
   std::uint32_t other_counter_ = 0;
 };
 
@@ -284,30 +411,58 @@ class Builder {
   std::unordered_map<Key, std::uint32_t, KeyHash> index_;
 };
 
-/// x lies in the normal cone of the boundary vertex: on the cone's side of every face.
-/// Exact orient3d on the double points.
-bool in_normal_cone(const Point3& x, const Site& site, std::span<const Ball> balls) {
-  for (const ConeFace& f : site.faces) {
-    const Sign s = predicates::orient3d(site.point, balls[f.p].c, balls[f.q].c, x);
+/// The circumcentre of the Delaunay cell `cell` of V lies in the normal cone of the
+/// boundary vertex `site`: on the cone's side of every face (cone_face_side), never
+/// decided on the rounded circumcentre.
+bool circumcentre_in_normal_cone(const RegularTriangulation3& del, CellId cell,
+                                 std::span<const Site> sites, std::uint32_t site,
+                                 std::span<const Ball> balls) {
+  for (const ConeFace& f : sites[site].faces) {
+    const Sign s = cone_face_side(del, cell, sites, site, f, balls);
     if (to_int(s * f.inside) < 0) return false;
   }
   return true;
 }
 
 /// The Voronoi vertex x of a Delaunay cell of V is medial iff its Voronoi ball lies in U:
-/// x must lie in U (exact power tests against the balls) and in the normal cone of each of
-/// its four sites (otherwise the ball leaves U beside that site).
-bool is_inner_voronoi_vertex(const Point3& x, const std::array<std::uint32_t, 4>& cell,
+/// x must lie in U (exact power tests against the balls, on the rounded x) and in the
+/// normal cone of each of its four sites (otherwise the ball leaves U beside that site;
+/// decided exactly on the cell's points).
+bool is_inner_voronoi_vertex(const Point3& x, const RegularTriangulation3& del, CellId cell,
                              std::span<const Site> sites, const RegularTriangulation3& rt,
                              std::span<const Ball> balls, CellId& hint) {
   if (!is_finite(x)) return false;
   const auto nearest = rt.nearest_power_vertex(x, hint);
   hint = rt.incident_cell(nearest);
   if (predicates::power_sign(x, rt.weighted_point(nearest)) == Sign::positive) return false;
-  for (auto s : cell) {
-    if (!in_normal_cone(x, sites[s], balls)) return false;
+  for (auto s : del.vertices(cell)) {
+    if (s >= sites.size() || !circumcentre_in_normal_cone(del, cell, sites, s, balls)) return false;
   }
   return true;
+}
+
+/// Adds a clipped face: a polygon whose boundary passes a vertex twice (the rounded
+/// geometry of a near-degenerate face can pinch it there) is the two polygons on either
+/// side of the pinch; a two-vertex loop is an edge, a one-vertex loop adds nothing.
+void add_polygon(std::vector<std::uint32_t> ids, MedialAxis& axis) {
+  const std::size_t n = ids.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (ids[i] != ids[j]) continue;
+      std::vector<std::uint32_t> first(ids.begin() + static_cast<std::ptrdiff_t>(i),
+                                       ids.begin() + static_cast<std::ptrdiff_t>(j));
+      std::vector<std::uint32_t> second(ids.begin() + static_cast<std::ptrdiff_t>(j), ids.end());
+      second.insert(second.end(), ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(i));
+      add_polygon(std::move(first), axis);
+      add_polygon(std::move(second), axis);
+      return;
+    }
+  }
+  if (n >= 3) {
+    axis.faces.push_back(std::move(ids));
+  } else if (n == 2) {
+    axis.edges.push_back({ids[0], ids[1]});
+  }
 }
 
 MedialVertexKind kind_of(const Key& key) {
@@ -507,9 +662,12 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
       if (d.point >= nv || d.vertex >= nv) continue;
       for (auto b : bv[d.point].balls) site[d.vertex].tags.insert(b);
     }
+    std::vector<bool> live(nv);
     for (std::uint32_t v = 0; v < nv; ++v) {
-      if (del.is_vertex(v)) site[v].faces = cone_faces(site[v], balls);
+      live[v] = del.is_vertex(v);
+      if (live[v]) site[v].faces = cone_faces(site[v], balls);
     }
+    link_arc_partners(site, live, balls);
 
     // Cells whose common facet has five exactly cospherical points (unperturbed insphere
     // on the rounded points) have the same Voronoi vertex: one vertex per such group.
@@ -562,7 +720,7 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
         cell_vertex[c] = {tet_key(c), del.circumcenter(c)};
         cell_radius[c] = std::sqrt(del.squared_circumradius(c));
         if (!has_far) {
-          inner[c] = is_inner_voronoi_vertex(cell_vertex[c].p, vs, site, rt, balls, hint) ? 1 : 0;
+          inner[c] = is_inner_voronoi_vertex(cell_vertex[c].p, del, c, site, rt, balls, hint) ? 1 : 0;
         }
       }
     });
@@ -585,7 +743,7 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
       }
     });
 
-    Clipper clipper(balls, site);
+    Clipper clipper(balls, site, del);
     std::unordered_set<std::uint64_t> seen;
     std::vector<PolyVertex> poly;
     std::vector<SideOrigin> sides;
@@ -645,16 +803,7 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
             }
             ids.push_back(builder.vertex(pv->key, pv->p, radius, kind_of(pv->key), source));
           }
-          std::vector<std::uint32_t> sorted = ids;
-          std::sort(sorted.begin(), sorted.end());
-          const bool distinct = std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
-          if (ids.size() >= 3 && distinct) {
-            axis.faces.push_back(std::move(ids));
-          } else if (ids.size() >= 2) {
-            for (std::size_t q = 0; q + 1 < ids.size(); ++q) {
-              if (ids[q] != ids[q + 1]) axis.edges.push_back({ids[q], ids[q + 1]});
-            }
-          }
+          add_polygon(std::move(ids), axis);
         }
       }
     });

@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -68,41 +69,85 @@ TEST_CASE("equal balls on a non-dyadic grid: four spheres through a point", "[me
   CHECK(b == stats.betti_k);
 }
 
-TEST_CASE("equal balls on a grid, perturbed by 2^-45", "[medial][.degenerate]") {
-  // Known failure (hidden until fixed): the axis merges the four cavities, Betti (1,0,1)
-  // instead of K's (1,0,4). It is not a rounding effect: the same failure appears for
-  // every perturbation from 2^-20 (points of V 1e-6 apart, constructions accurate to
-  // 1e-16) down to 2^-50, while 2^-12 works (test below); computing V in long double
-  // changes nothing. Diagnosis: the three lost walls are outer walls (x = 0 and x = 2).
-  // Near such a wall's centre the one four-sphere point of the exact grid splits into
-  // clusters of three-sphere points on both sides; the Voronoi vertex at the wall's centre
-  // (a tetrahedron with two sites of each cluster) lies, in the unperturbed limit, exactly
-  // on a face of a site's normal cone (the square's diagonal), and the perturbation puts it
-  // a hair outside, so it is not inner, and the whole-face rule (a face goes when one of
-  // its Voronoi vertices is not inner) removes every wall face around it instead of
-  // cutting a sliver off them. The fix needs the faces clipped by the whole normal cones
-  // of their sites, with consistent cut vertices between neighbouring faces.
-  std::vector<Ball> balls = grid(3, 3, 2, 0.75);
+namespace {
+
+/// Equal balls on an nx × ny × nz grid, moved by multiples of 2^-e: pattern 0 is a fixed
+/// pattern (centres by i mod 5 and i mod 3, radii by i mod 7), patterns ≥ 1 are
+/// pseudo-random in [−4, 4]·2^-e on every coordinate and radius.
+std::vector<Ball> perturbed_grid(int nx, int ny, int nz, double r, int e, int pattern) {
+  std::vector<Ball> balls = grid(nx, ny, nz, r);
+  std::uint64_t state = static_cast<std::uint64_t>(pattern) * 2654435761ull + 12345;
+  auto step = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>((state >> 33) % 9) - 4.0;
+  };
   for (std::size_t i = 0; i < balls.size(); ++i) {
-    balls[i].c.x += std::ldexp(static_cast<double>(i % 5) - 2.0, -45);
-    balls[i].c.y += std::ldexp(static_cast<double>(i % 3) - 1.0, -45);
-    balls[i].r += std::ldexp(static_cast<double>(i % 7), -45);
+    if (pattern == 0) {
+      balls[i].c.x += std::ldexp(static_cast<double>(i % 5) - 2.0, -e);
+      balls[i].c.y += std::ldexp(static_cast<double>(i % 3) - 1.0, -e);
+      balls[i].r += std::ldexp(static_cast<double>(i % 7), -e);
+    } else {
+      balls[i].c.x += std::ldexp(step(), -e);
+      balls[i].c.y += std::ldexp(step(), -e);
+      balls[i].c.z += std::ldexp(step(), -e);
+      balls[i].r += std::ldexp(step(), -e);
+    }
   }
+  return balls;
+}
+
+}  // namespace
+
+TEST_CASE("equal balls on grids, perturbed by 2^-14 … 2^-50", "[medial]") {
+  // Four spheres almost through one point: each such point splits into a cluster of
+  // boundary vertices 10⁻⁵ … 10⁻¹⁵ apart, and the Voronoi vertex between two clusters sits,
+  // in the unperturbed limit, on the faces of the sites' normal cones. The rounded
+  // circumcentre cannot decide those sides; cone_face_side decides them as for exact
+  // boundary vertices (before that, 87 of these 144 runs lost walls or gained holes).
+  struct Grid {
+    int nx, ny, nz;
+    double r;
+  };
+  for (const Grid g : {Grid{2, 2, 2, 0.75}, Grid{3, 3, 2, 0.75}, Grid{4, 3, 2, 0.75},
+                       Grid{3, 3, 3, 0.75}, Grid{3, 3, 1, 0.6}}) {
+    for (int e : {14, 20, 30, 40, 45, 50}) {
+      for (int pattern : {0, 1, 3}) {
+        INFO("grid " << g.nx << "x" << g.ny << "x" << g.nz << " r " << g.r << ", 2^-" << e
+                     << ", pattern " << pattern);
+        MedialAxisStats stats;
+        const auto b = axis_betti(perturbed_grid(g.nx, g.ny, g.nz, g.r, e, pattern), stats);
+        CHECK(b == stats.betti_k);
+      }
+    }
+  }
+}
+
+TEST_CASE("known failures of near-degenerate grids", "[medial][.degenerate]") {
+  // Hidden until fixed. Two classes remain (18 of the 144 runs of the sweep above with
+  // pattern 2 and the 3×3×3 grid at r = 0.9 added):
+  //  - Pattern 2 at 2^-30 leaves two boundary vertices 1 ulp apart (or equal): their
+  //    order on their circle is below the rounding of V, so the Voronoi diagram of the
+  //    rounded V has no vertex near the wall between the clusters and a wall is lost.
+  //  - The 3×3×3 grid at r = 0.9 from 2^-30 on: the cube centres are, in the limit,
+  //    equidistant from four cocircular boundary vertices (two clusters), so the rounded
+  //    V makes needle cells whose circumcentres slide along the circle's axis by O(1),
+  //    while the cell whose four sites share a sphere is placed at that sphere's centre
+  //    (its exact position): the clipped faces through those cells pinch or fold, and
+  //    the axis gains 1 to 14 independent cycles.
+  // Both need the Delaunay triangulation of the exact boundary vertices (points with a
+  // square root), not of their roundings.
   MedialAxisStats stats;
-  const auto b = axis_betti(balls, stats);
+  auto b = axis_betti(perturbed_grid(2, 2, 2, 0.75, 30, 2), stats);
+  CHECK(b == stats.betti_k);
+  b = axis_betti(perturbed_grid(3, 3, 3, 0.9, 30, 0), stats);
   CHECK(b == stats.betti_k);
 }
 
 TEST_CASE("equal balls on a grid with cavities, perturbed by 2^-12", "[medial]") {
   // r = 0.75 leaves the centre of every grid cube uncovered: four cavities.
-  std::vector<Ball> balls = grid(3, 3, 2, 0.75);
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    balls[i].c.x += std::ldexp(static_cast<double>(i % 5) - 2.0, -12);
-    balls[i].c.y += std::ldexp(static_cast<double>(i % 3) - 1.0, -12);
-    balls[i].r += std::ldexp(static_cast<double>(i % 7), -12);
-  }
   MedialAxisStats stats;
-  const auto b = axis_betti(balls, stats);
+  const auto b = axis_betti(perturbed_grid(3, 3, 2, 0.75, 12, 0), stats);
+  CHECK(stats.betti_k == complex::BettiNumbers{{1, 0, 4, 0}});
   CHECK(b == stats.betti_k);
 }
 
