@@ -35,6 +35,7 @@ SpherePair three_sphere_points(const Ball& bi, const Ball& bj, const Ball& bk) {
   const Vec3 zc = alpha * u + beta * v;
   const double h2 = bi.r * bi.r - dot(zc, zc);
   const double h = h2 > 0 ? std::sqrt(h2) : 0.0;
+  // n = u × v / |u × v|: orient3d(c_i, c_j, c_k, c_i + n) > 0, so `plus` is side +1.
   const Vec3 n = normalized(cross(u, v));
   return {bi.c + zc + h * n, bi.c + zc - h * n};
 }
@@ -75,8 +76,8 @@ std::vector<BoundaryVertex> boundary_vertices(std::span<const Ball> balls,
         done[*index] = true;
         const SpherePair p = three_sphere_points(balls[t[0]], balls[t[1]], balls[t[2]]);
         const auto first = static_cast<std::uint32_t>(out.size());
-        out.push_back({p.plus, t, first + 1});
-        out.push_back({p.minus, t, first});
+        out.push_back({p.plus, t, first + 1, +1});
+        out.push_back({p.minus, t, first, -1});
       } else if (cls == FacetClass::regular && tet_in_k) {
         // Lemma (Edelsbrunner 1995): the dual power edge runs from the orthocentre of the
         // tetrahedron in K (power ≤ 0) outwards across the facet; its point on the spheres
@@ -87,7 +88,8 @@ std::vector<BoundaryVertex> boundary_vertices(std::span<const Ball> balls,
         const Point3& d = balls[t[2]].c;
         const Sign apex = predicates::orient3d(a, b, d, rt.point(cell[f]));
         const Sign plus = predicates::orient3d(a, b, d, p.plus);
-        out.push_back({plus == apex ? p.minus : p.plus, t, kNoTwin});
+        out.push_back(plus == apex ? BoundaryVertex{p.minus, t, kNoTwin, -1}
+                                   : BoundaryVertex{p.plus, t, kNoTwin, +1});
       }
     }
   });

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -17,6 +18,7 @@
 #include "rstruct/predicates/predicates.hpp"
 #include "rstruct/triangulation/regular_triangulation_3.hpp"
 #include "medial/circumcentre_side.hpp"
+#include "medial/sphere_incidence.hpp"
 #include "medial/union_triangulation.hpp"
 
 namespace rstruct::medial {
@@ -50,9 +52,15 @@ struct KeyHash {
 Key tet_key(CellId c) { return Key{{kTet, c, kNone, kNone, kNone, kNone, kNone}}; }
 Key centre_key(std::uint32_t m) { return Key{{kCentre, m, kNone, kNone, kNone, kNone, kNone}}; }
 
-/// A set of up to eight ball ids, increasing, padded with kNone.
+/// A set of up to sixteen ball ids, increasing, padded with kNone (a point of V on more
+/// than sixteen spheres is an InvalidInput).
 struct IdSet {
-  std::array<std::uint32_t, 8> id{kNone, kNone, kNone, kNone, kNone, kNone, kNone, kNone};
+  static constexpr int kCapacity = 16;
+  std::array<std::uint32_t, kCapacity> id = [] {
+    std::array<std::uint32_t, kCapacity> a{};
+    a.fill(kNone);
+    return a;
+  }();
   int size = 0;
   bool contains(std::uint32_t x) const {
     for (int i = 0; i < size; ++i) {
@@ -61,7 +69,11 @@ struct IdSet {
     return false;
   }
   void insert(std::uint32_t x) {
-    if (contains(x) || size == 8) return;
+    if (contains(x)) return;
+    if (size == kCapacity) {
+      throw InvalidInput("medial axis: a point of the union's boundary lies on more than " +
+                         std::to_string(kCapacity) + " spheres");
+    }
     int i = size++;
     for (; i > 0 && id[i - 1] > x; --i) id[i] = id[i - 1];
     id[i] = x;
@@ -74,12 +86,6 @@ IdSet intersect(const IdSet& a, const IdSet& b) {
     if (b.contains(a.id[i])) r.insert(a.id[i]);
   }
   return r;
-}
-
-IdSet tag_set(const BoundaryVertex& v) {
-  IdSet s;
-  for (auto b : v.balls) s.insert(b);
-  return s;
 }
 
 /// A face of the normal cone of a boundary vertex a: the plane (a, c_p, c_q), with the
@@ -174,10 +180,18 @@ Sign cone_face_side(const RegularTriangulation3& del, CellId cell, std::span<con
   }
   if (partners > 1) return Sign::zero;
   const Point3& b = sites[partner].point;
+  const Sign across = predicates::orient3d(a, cp, cq, b);
+  if (across == Sign::zero) {
+    // s' on the face plane: s and s' are antipodal on the circle (twins of a singular facet
+    // whose centre lies on the axis), their bisector plane is perpendicular to the face
+    // plane, and z's side is a plain, well-conditioned side test.
+    return circumcentre_side(del.point(vs[0]), del.point(vs[1]), del.point(vs[2]),
+                             del.point(vs[3]), a, cp, cq);
+  }
   const Sign z_half = circumcentre_side(del.point(vs[0]), del.point(vs[1]), del.point(vs[2]),
                                         del.point(vs[3]), cp, cp, cq, a, b);
   const Sign s_half = point_side(a, cp, cp, cq, a, b);
-  return z_half * s_half * predicates::orient3d(a, cp, cq, b);
+  return z_half * s_half * across;
 }
 
 /// For every cone face (a; p, q), the arc of ∂U on the circle S_p ∩ S_q that leaves a on
@@ -369,7 +383,11 @@ class Clipper {
         } else {
           const double di = dot(plane.normal, poly[i].p - plane.corner[0]);
           const double dj = dot(plane.normal, poly[j].p - plane.corner[0]);
-          const double t = di / (di - dj);
+          // The sides were decided exactly (a Voronoi vertex on its cell's points), the
+          // distances are rounded and may disagree with them, or both be zero: keep the
+          // parameter in [0, 1] (0 for 0/0).
+          double t = di / (di - dj);
+          t = t >= 0.0 ? std::min(t, 1.0) : 0.0;
           p = poly[i].p + t * (poly[j].p - poly[i].p);
         }
         out.push_back({key, p});
@@ -645,7 +663,9 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
     }
   }
 
-  const std::vector<BoundaryVertex> bv = boundary_vertices(balls, rt, k);
+  // The boundary vertices, one per exact point, with every sphere through it.
+  const DistinctVertices distinct = distinct_vertices(boundary_vertices(balls, rt, k), balls, rt);
+  const std::vector<BoundaryVertex>& bv = distinct.vertex;
   st.boundary_vertices = bv.size();
   if (!bv.empty()) {
     const auto nv = static_cast<std::uint32_t>(bv.size());
@@ -657,10 +677,13 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
     st.delaunay_cells = del.number_of_finite_cells();
 
     std::vector<Site> site(nv);
-    for (std::uint32_t v = 0; v < nv; ++v) site[v] = {bv[v].point, tag_set(bv[v]), {}};
+    for (std::uint32_t v = 0; v < nv; ++v) {
+      site[v].point = bv[v].point;
+      for (auto b : distinct.on[v]) site[v].tags.insert(b);
+    }
     for (const auto& d : del.duplicate_points()) {
       if (d.point >= nv || d.vertex >= nv) continue;
-      for (auto b : bv[d.point].balls) site[d.vertex].tags.insert(b);
+      for (auto b : distinct.on[d.point]) site[d.vertex].tags.insert(b);
     }
     std::vector<bool> live(nv);
     for (std::uint32_t v = 0; v < nv; ++v) {
@@ -671,6 +694,8 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
 
     // Cells whose common facet has five exactly cospherical points (unperturbed insphere
     // on the rounded points) have the same Voronoi vertex: one vertex per such group.
+    // (Points of V that are cospherical only before rounding, and share no sphere, are
+    // not found: see the hidden test "known failures" in test_degenerate_unions.)
     std::vector<CellId> group(del.cell_capacity());
     for (CellId c = 0; c < group.size(); ++c) group[c] = c;
     auto find = [&](CellId c) {

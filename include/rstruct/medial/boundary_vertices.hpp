@@ -32,6 +32,10 @@ struct BoundaryVertex {
   std::array<std::uint32_t, 3> balls{};
   /// Index of its twin (the other point of the same singular facet), or kNoTwin.
   std::uint32_t twin = 0xffffffffu;
+  /// Which of the two points of the three spheres it is: +1 on the side of the centres'
+  /// plane where orient3d(c_i, c_j, c_k, ·) > 0 (i < j < k the balls), −1 on the other.
+  /// With the balls it names the exact point, of which `point` is the rounding.
+  int side = 0;
 };
 
 inline constexpr std::uint32_t kNoTwin = 0xffffffffu;
