@@ -140,7 +140,7 @@ TEST_CASE("balls of four radii on a grid: exact cospherical and cocircular point
   // Radii 0.6 … 0.9 on the integer grid: many points of ∂U lie on four or more spheres, some
   // on a sphere that none of the facets giving them names, and twins of singular facets can
   // be antipodal on a circle. Without the exact sphere incidences of sphere_incidence.hpp
-  // (one site per exact point, every sphere through it) 6 of these 60 unions got wrong
+  // (one site per exact point, every sphere through it) 13 of these 60 unions got wrong
   // Betti numbers. (Trial 6 of n = 16 is a known failure: see below.)
   for (int n : {16, 27}) {
     for (int trial = 0; trial < 30; ++trial) {
