@@ -8,8 +8,10 @@
 // cell a needle whose rounded circumcentre is off by far more than its distance to a cone
 // face. So the side is decided on the cell's own points, never on the rounded centre.
 
+#include <array>
 #include <cstdint>
 
+#include "complex/filtered_number.hpp"
 #include "rstruct/geometry/vec3.hpp"
 #include "rstruct/predicates/sign.hpp"
 
@@ -41,6 +43,29 @@ Sign circumcentre_radial_side(const Point3& a, const Point3& b, const Point3& c,
 /// The sign of n·(z − o) for an input point z, n as above. Exact.
 Sign point_side(const Point3& z, const Point3& o, const Point3& e1_from, const Point3& e1_to,
                 const Point3& e2_from, const Point3& e2_to);
+
+/// The same predicates for many planes against one cell: the plane-independent terms of
+/// the filter stage (v and Δ) are computed once.
+class CellCircumcentre {
+ public:
+  CellCircumcentre() = default;
+  CellCircumcentre(const Point3& a, const Point3& b, const Point3& c, const Point3& d);
+
+  /// circumcentre_side(a, b, c, d, o, e1_from, e1_to, e2_from, e2_to).
+  Sign side(const Point3& o, const Point3& e1_from, const Point3& e1_to, const Point3& e2_from,
+            const Point3& e2_to) const;
+  /// circumcentre_side(a, b, c, d, s, p, q).
+  Sign side(const Point3& s, const Point3& p, const Point3& q) const {
+    return side(s, s, p, s, q);
+  }
+  /// circumcentre_radial_side(a, b, c, d, s, p, q).
+  Sign radial_side(const Point3& s, const Point3& p, const Point3& q) const;
+
+ private:
+  std::array<Point3, 4> point_{};
+  std::array<complex::detail::FilteredNumber, 3> v_{};
+  complex::detail::FilteredNumber delta_{};
+};
 
 /// Calls that the floating-point filter could not decide (for tests and reports).
 std::uint64_t circumcentre_side_exact_calls();

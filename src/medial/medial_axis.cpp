@@ -132,6 +132,28 @@ std::vector<ConeFace> cone_faces(const Site& site, std::span<const Ball> balls) 
   return faces;
 }
 
+/// The filter terms of each Delaunay cell's circumcentre, computed on first use.
+class CircumcentreCache {
+ public:
+  explicit CircumcentreCache(const RegularTriangulation3& del)
+      : del_(del), cell_(del.cell_capacity()), have_(del.cell_capacity(), false) {}
+
+  const CellCircumcentre& operator()(CellId c) {
+    if (!have_[c]) {
+      const auto vs = del_.vertices(c);
+      cell_[c] = CellCircumcentre(del_.point(vs[0]), del_.point(vs[1]), del_.point(vs[2]),
+                                  del_.point(vs[3]));
+      have_[c] = true;
+    }
+    return cell_[c];
+  }
+
+ private:
+  const RegularTriangulation3& del_;
+  std::vector<CellCircumcentre> cell_;
+  std::vector<bool> have_;
+};
+
 /// The side of the Voronoi vertex z of the Delaunay cell `cell` of V relative to the plane
 /// of the face (s; p, q) of site s's normal cone: the sign of orient3d(site s, c_p, c_q, z),
 /// decided as it is for the exact boundary vertices, of which the sites are roundings.
@@ -148,8 +170,9 @@ std::vector<ConeFace> cone_faces(const Site& site, std::span<const Ball> balls) 
 /// of the plane through the axis with normal (c_q − c_p) × (s' − s). Two or more such s'
 /// put z on the axis: zero. Without such s', the side is circumcentre_side on the cell.
 /// All signs are exact on the double inputs.
-Sign cone_face_side(const RegularTriangulation3& del, CellId cell, std::span<const Site> sites,
-                    std::uint32_t s, const ConeFace& face, std::span<const Ball> balls) {
+Sign cone_face_side(const RegularTriangulation3& del, CircumcentreCache& circumcentre, CellId cell,
+                    std::span<const Site> sites, std::uint32_t s, const ConeFace& face,
+                    std::span<const Ball> balls) {
   const std::uint32_t p = face.p, q = face.q;
   const auto vs = del.vertices(cell);
   const auto nv = static_cast<std::uint32_t>(sites.size());
@@ -165,8 +188,7 @@ Sign cone_face_side(const RegularTriangulation3& del, CellId cell, std::span<con
   const Point3& cp = balls[p].c;
   const Point3& cq = balls[q].c;
   if (partners == 0) {
-    const Sign side = circumcentre_side(del.point(vs[0]), del.point(vs[1]), del.point(vs[2]),
-                                        del.point(vs[3]), a, cp, cq);
+    const Sign side = circumcentre(cell).side(a, cp, cq);
     if (to_int(side * face.inside) >= 0 || !face.short_arc) return side;
     // z beyond the face means the Voronoi ball leaves U along the arc from s, so the arc
     // comes closer to z than s: for exact boundary vertices and a cell that is Delaunay,
@@ -174,8 +196,7 @@ Sign cone_face_side(const RegularTriangulation3& del, CellId cell, std::span<con
     // being shorter than a half circle) is on s's side of the axis. z on the other side
     // (as the Voronoi vertices of a whole cluster's far side are, when the rounding of V
     // decides which cluster point is nearer) is therefore within the cone for exact V.
-    const Sign half = circumcentre_radial_side(del.point(vs[0]), del.point(vs[1]),
-                                               del.point(vs[2]), del.point(vs[3]), a, cp, cq);
+    const Sign half = circumcentre(cell).radial_side(a, cp, cq);
     return half == Sign::positive ? side : Sign::zero;
   }
   if (partners > 1) return Sign::zero;
@@ -185,11 +206,9 @@ Sign cone_face_side(const RegularTriangulation3& del, CellId cell, std::span<con
     // s' on the face plane: s and s' are antipodal on the circle (twins of a singular facet
     // whose centre lies on the axis), their bisector plane is perpendicular to the face
     // plane, and z's side is a plain, well-conditioned side test.
-    return circumcentre_side(del.point(vs[0]), del.point(vs[1]), del.point(vs[2]),
-                             del.point(vs[3]), a, cp, cq);
+    return circumcentre(cell).side(a, cp, cq);
   }
-  const Sign z_half = circumcentre_side(del.point(vs[0]), del.point(vs[1]), del.point(vs[2]),
-                                        del.point(vs[3]), cp, cp, cq, a, b);
+  const Sign z_half = circumcentre(cell).side(cp, cp, cq, a, b);
   const Sign s_half = point_side(a, cp, cp, cq, a, b);
   return z_half * s_half * across;
 }
@@ -275,8 +294,8 @@ struct Plane {
 class Clipper {
  public:
   Clipper(std::span<const Ball> balls, std::span<const Site> sites,
-          const RegularTriangulation3& del)
-      : balls_(balls), sites_(sites), del_(del) {}
+          const RegularTriangulation3& del, CircumcentreCache& circumcentre)
+      : balls_(balls), sites_(sites), del_(del), circumcentre_(circumcentre) {}
 
   /// Clips the polygon of the Voronoi face F(a, b) by the faces of a's normal cone that
   /// contain an axis c_p c_q lying in F(a, b), i.e. whose balls p, q both a and b lie on:
@@ -307,7 +326,8 @@ class Clipper {
   int side(const Plane& plane, const PolyVertex& x) const {
     Sign s;
     if (x.key.v[0] == kTet) {
-      s = cone_face_side(del_, x.key.v[1], sites_, plane.site, *plane.face, balls_);
+      s = cone_face_side(del_, circumcentre_, x.key.v[1], sites_, plane.site, *plane.face,
+                         balls_);
     } else {
       s = predicates::orient3d(plane.corner[0], plane.corner[1], plane.corner[2], x.p);
     }
@@ -403,6 +423,7 @@ class Clipper {
   std::span<const Ball> balls_;
   std::span<const Site> sites_;
   const RegularTriangulation3& del_;
+  CircumcentreCache& circumcentre_;
   std::uint32_t other_counter_ = 0;
 };
 
@@ -432,11 +453,12 @@ class Builder {
 /// The circumcentre of the Delaunay cell `cell` of V lies in the normal cone of the
 /// boundary vertex `site`: on the cone's side of every face (cone_face_side), never
 /// decided on the rounded circumcentre.
-bool circumcentre_in_normal_cone(const RegularTriangulation3& del, CellId cell,
+bool circumcentre_in_normal_cone(const RegularTriangulation3& del,
+                                 CircumcentreCache& circumcentre, CellId cell,
                                  std::span<const Site> sites, std::uint32_t site,
                                  std::span<const Ball> balls) {
   for (const ConeFace& f : sites[site].faces) {
-    const Sign s = cone_face_side(del, cell, sites, site, f, balls);
+    const Sign s = cone_face_side(del, circumcentre, cell, sites, site, f, balls);
     if (to_int(s * f.inside) < 0) return false;
   }
   return true;
@@ -446,7 +468,8 @@ bool circumcentre_in_normal_cone(const RegularTriangulation3& del, CellId cell,
 /// x must lie in U (exact power tests against the balls, on the rounded x) and in the
 /// normal cone of each of its four sites (otherwise the ball leaves U beside that site;
 /// decided exactly on the cell's points).
-bool is_inner_voronoi_vertex(const Point3& x, const RegularTriangulation3& del, CellId cell,
+bool is_inner_voronoi_vertex(const Point3& x, const RegularTriangulation3& del,
+                             CircumcentreCache& circumcentre, CellId cell,
                              std::span<const Site> sites, const RegularTriangulation3& rt,
                              std::span<const Ball> balls, CellId& hint) {
   if (!is_finite(x)) return false;
@@ -454,7 +477,9 @@ bool is_inner_voronoi_vertex(const Point3& x, const RegularTriangulation3& del, 
   hint = rt.incident_cell(nearest);
   if (predicates::power_sign(x, rt.weighted_point(nearest)) == Sign::positive) return false;
   for (auto s : del.vertices(cell)) {
-    if (s >= sites.size() || !circumcentre_in_normal_cone(del, cell, sites, s, balls)) return false;
+    if (s >= sites.size() || !circumcentre_in_normal_cone(del, circumcentre, cell, sites, s, balls)) {
+      return false;
+    }
   }
   return true;
 }
@@ -502,6 +527,14 @@ std::vector<bool> nested_balls(std::span<const Ball> balls, const complex::Simpl
       const std::uint32_t i = e[side], j = e[1 - side];  // is ball i inside ball j?
       const Ball& bi = balls[i];
       const Ball& bj = balls[j];
+      // Floating-point prefilter for the clear cases (relative margin 10⁻¹², far above the
+      // few-ulp error of these sums of squares); the rest is decided with rationals.
+      const double dr_f = bj.r - bi.r;
+      const double scale = bi.r + bj.r;
+      if (dr_f < -1e-12 * scale) continue;
+      const Vec3 dc = bi.c - bj.c;
+      const double d2_f = dot(dc, dc);
+      if (d2_f > dr_f * dr_f + 1e-12 * (d2_f + scale * scale)) continue;
       const mpq_class dr = mpq_class(bj.r) - mpq_class(bi.r);
       if (sgn(dr) < 0) continue;
       const mpq_class dx = mpq_class(bi.c.x) - mpq_class(bj.c.x);
@@ -720,6 +753,8 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
       }
     });
 
+    CircumcentreCache circumcentre(del);
+
     // Voronoi vertex of every finite cell: the centre its sites share, or the circumcentre.
     std::vector<PolyVertex> cell_vertex(del.cell_capacity());
     std::vector<double> cell_radius(del.cell_capacity(), 0.0);
@@ -745,7 +780,10 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
         cell_vertex[c] = {tet_key(c), del.circumcenter(c)};
         cell_radius[c] = std::sqrt(del.squared_circumradius(c));
         if (!has_far) {
-          inner[c] = is_inner_voronoi_vertex(cell_vertex[c].p, del, c, site, rt, balls, hint) ? 1 : 0;
+          inner[c] = is_inner_voronoi_vertex(cell_vertex[c].p, del, circumcentre, c, site, rt,
+                                             balls, hint)
+                         ? 1
+                         : 0;
         }
       }
     });
@@ -768,7 +806,7 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
       }
     });
 
-    Clipper clipper(balls, site, del);
+    Clipper clipper(balls, site, del, circumcentre);
     std::unordered_set<std::uint64_t> seen;
     std::vector<PolyVertex> poly;
     std::vector<SideOrigin> sides;

@@ -94,6 +94,16 @@ DistinctVertices distinct_vertices(std::span<const BoundaryVertex> bv, std::span
                                    const triangulation::RegularTriangulation3& rt) {
   const auto n = static_cast<std::uint32_t>(balls.size());
   std::vector<std::vector<std::uint32_t>> on(bv.size());
+  // Neighbours of each ball in rt, computed once on first use.
+  std::vector<std::vector<std::uint32_t>> neighbours(n);
+  std::vector<bool> have_neighbours(n, false);
+  auto adjacent = [&](std::uint32_t x) -> const std::vector<std::uint32_t>& {
+    if (!have_neighbours[x]) {
+      neighbours[x] = rt.adjacent_vertices(x);
+      have_neighbours[x] = true;
+    }
+    return neighbours[x];
+  };
   std::vector<std::uint32_t> frontier;
   std::unordered_set<std::uint32_t> tested;
   for (std::size_t v = 0; v < bv.size(); ++v) {
@@ -106,8 +116,8 @@ DistinctVertices distinct_vertices(std::span<const BoundaryVertex> bv, std::span
     while (!frontier.empty()) {
       const std::uint32_t x = frontier.back();
       frontier.pop_back();
-      if (!rt.is_vertex(x)) continue;
-      for (const auto y : rt.adjacent_vertices(x)) {
+      if (x >= n || !rt.is_vertex(x)) continue;
+      for (const auto y : adjacent(x)) {
         if (y >= n || !tested.insert(y).second) continue;
         if (!near_sphere(bv[v].point, balls[y])) continue;
         if (!exact) exact = exact_vertex(bv[v], balls);
