@@ -788,13 +788,17 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
       }
     });
 
-    // One vertex per cospherical group, a shared centre first.
+    // One vertex per cospherical group, a shared centre first. A Voronoi vertex of several
+    // cells is inner only if it lies in the normal cones of all their sites.
     del.for_each_finite_cell([&](CellId c) {
       const CellId r = find(c);
-      if (r != c && cell_vertex[c].key.v[0] == kCentre && cell_vertex[r].key.v[0] != kCentre) {
+      if (r == c) return;
+      if (cell_vertex[c].key.v[0] == kCentre && cell_vertex[r].key.v[0] != kCentre) {
         cell_vertex[r] = cell_vertex[c];
         cell_radius[r] = cell_radius[c];
         inner[r] = inner[c];
+      } else if (cell_vertex[r].key.v[0] != kCentre && !inner[c]) {
+        inner[r] = 0;
       }
     });
     del.for_each_finite_cell([&](CellId c) {
