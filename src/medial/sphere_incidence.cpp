@@ -26,15 +26,7 @@ Q3 cross(const Q3& a, const Q3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-/// The exact point of a boundary vertex: o + side·√h·n, o = c_i + z the point of the
-/// centres' plane with equal power to the three balls, n = (c_j − c_i) × (c_k − c_i),
-/// h = (r_i² − |z|²) / |n|² (the construction of boundary_vertices, in rationals).
-struct ExactVertex {
-  Q3 o;
-  Q3 n;
-  mpq_class h;
-  int side = 0;
-};
+}  // namespace
 
 ExactVertex exact_vertex(const BoundaryVertex& v, std::span<const Ball> balls) {
   const Ball& bi = balls[v.balls[0]];
@@ -57,6 +49,8 @@ ExactVertex exact_vertex(const BoundaryVertex& v, std::span<const Ball> balls) {
   return e;
 }
 
+namespace {
+
 /// |P − c|² − r² = A + 2·side·√H·B with A = |o − c|² + H|N|² − r², B = (o − c)·N.
 bool on_sphere(const ExactVertex& e, const Ball& m) {
   const Q3 d = sub(e.o, q(m.c));
@@ -76,7 +70,8 @@ bool near_sphere(const Point3& p, const Ball& m) {
 }
 
 /// Sign of N₁·N₂ for the centre triangles of two vertices (exact).
-int normal_agreement(const BoundaryVertex& a, const BoundaryVertex& b, std::span<const Ball> balls) {
+int normal_agreement(const BoundaryVertex& a, const BoundaryVertex& b,
+                     std::span<const Ball> balls) {
   auto normal = [&](const BoundaryVertex& v) {
     const Q3 ci = q(balls[v.balls[0]].c);
     return cross(sub(q(balls[v.balls[1]].c), ci), sub(q(balls[v.balls[2]].c), ci));

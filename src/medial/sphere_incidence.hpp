@@ -10,6 +10,9 @@
 // per point: both are decided here on the exact points (GMP rationals and one square root,
 // handled by squaring), never by comparing rounded coordinates.
 
+#include <gmpxx.h>
+
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -22,6 +25,18 @@ class RegularTriangulation3;
 }
 
 namespace rstruct::medial {
+
+/// The exact point of a boundary vertex: o + side·√h·n, o = c_i + z the point of the
+/// centres' plane with equal power to the three balls, n = (c_j − c_i) × (c_k − c_i),
+/// h = (r_i² − |z|²) / |n|² (the construction of boundary_vertices, in rationals).
+struct ExactVertex {
+  std::array<mpq_class, 3> o;
+  std::array<mpq_class, 3> n;
+  mpq_class h;
+  int side = 0;
+};
+
+ExactVertex exact_vertex(const BoundaryVertex& v, std::span<const Ball> balls);
 
 /// True iff the exact point of `v` (the point `v.side` of its three spheres) lies on the
 /// sphere of `m`. Exact.

@@ -122,9 +122,10 @@ TEST_CASE("equal balls on grids, perturbed by 2^-14 … 2^-50", "[medial]") {
     int nx, ny, nz;
     double r;
   };
-  for (const Grid g : {Grid{2, 2, 2, 0.75}, Grid{3, 3, 2, 0.75}, Grid{4, 3, 2, 0.75},
-                       Grid{3, 3, 3, 0.75}, Grid{3, 3, 1, 0.6}}) {
-    for (int e : {14, 20, 30, 40, 45, 50}) {
+  // (The exact cospherical tests make near-degenerate unions slow: a second or more each
+  // in a debug build, so this runs a subset of the 90 combinations checked by hand.)
+  for (const Grid g : {Grid{2, 2, 2, 0.75}, Grid{3, 3, 2, 0.75}, Grid{3, 3, 1, 0.6}}) {
+    for (int e : {14, 30, 50}) {
       for (int pattern : {0, 1, 3}) {
         INFO("grid " << g.nx << "x" << g.ny << "x" << g.nz << " r " << g.r << ", 2^-" << e
                      << ", pattern " << pattern);
@@ -141,10 +142,10 @@ TEST_CASE("balls of four radii on a grid: exact cospherical and cocircular point
   // on a sphere that none of the facets giving them names, and twins of singular facets can
   // be antipodal on a circle. Without the exact sphere incidences of sphere_incidence.hpp
   // (one site per exact point, every sphere through it) 13 of these 60 unions got wrong
-  // Betti numbers. (Trial 6 of n = 16 is a known failure: see below.)
+  // Betti numbers; with them and before Voronoi vertices were grouped by exact
+  // cospherical tests (exact_cospherical.hpp), 1 of 60 here and 8 of 60 unions of 300.
   for (int n : {16, 27}) {
     for (int trial = 0; trial < 30; ++trial) {
-      if (n == 16 && trial == 6) continue;
       const std::vector<Ball> balls = four_radii_grid(n, trial);
       INFO("n " << n << ", trial " << trial);
       MedialAxisStats stats;
@@ -154,9 +155,34 @@ TEST_CASE("balls of four radii on a grid: exact cospherical and cocircular point
   }
 }
 
+TEST_CASE("larger four-radii grids", "[medial]") {
+  // Of 40 unions of 125 balls and 30 of 300, 11 and 18 failed before the exact
+  // cospherical grouping, 1 and 1 after (both in the hidden test below). Four of them here.
+  for (int trial = 0; trial < 4; ++trial) {
+    INFO("trial " << trial);
+    MedialAxisStats stats;
+    const auto b = axis_betti(four_radii_grid(125, trial), stats);
+    CHECK(b == stats.betti_k);
+  }
+}
+
+TEST_CASE("equal balls on grids, radii from just touching diagonals to filling", "[medial]") {
+  struct Size {
+    int nx, ny, nz;
+  };
+  for (const Size g : {Size{2, 2, 2}, Size{3, 3, 3}, Size{4, 3, 2}, Size{5, 5, 2}}) {
+    for (double r : {0.55, 0.6, 0.71, 0.75, 0.8, 0.87, 0.9, 1.0, 1.2}) {
+      INFO(g.nx << "x" << g.ny << "x" << g.nz << ", r " << r);
+      MedialAxisStats stats;
+      const auto b = axis_betti(grid(g.nx, g.ny, g.nz, r), stats);
+      CHECK(b == stats.betti_k);
+    }
+  }
+}
+
 TEST_CASE("known failures of near-degenerate grids", "[medial][.degenerate]") {
-  // Hidden until fixed. Three classes remain. Near-degenerate (18 of the 144 runs of the
-  // perturbed-grid sweep with pattern 2 and the 3×3×3 grid at r = 0.9 added):
+  // Hidden until fixed. Two classes of near-degenerate unions remain (18 of the 144 runs of
+  // the perturbed-grid sweep with pattern 2 and the 3×3×3 grid at r = 0.9 added):
   //  - Pattern 2 at 2^-30 leaves two boundary vertices 1 ulp apart (or equal): their
   //    order on their circle is below the rounding of V, so the Voronoi diagram of the
   //    rounded V has no vertex near the wall between the clusters and a wall is lost.
@@ -166,18 +192,16 @@ TEST_CASE("known failures of near-degenerate grids", "[medial][.degenerate]") {
   //    while the cell whose four sites share a sphere is placed at that sphere's centre
   //    (its exact position): the clipped faces through those cells pinch or fold, and
   //    the axis gains 1 to 14 independent cycles.
-  // These need the Delaunay triangulation of the exact boundary vertices (points with a
-  // square root), not of their roundings. Exactly degenerate:
-  //  - Four radii on a grid (n = 16, trial 6): five boundary vertices that lie on one
-  //    sphere, though on no common ball's sphere, round to points that are not cospherical,
-  //    so one Voronoi vertex becomes two cells 10⁻¹⁶ apart, keyed apart, and the axis gains
-  //    a cycle. Deciding cospherical on the exact points (coordinates a + b√h) is possible
-  //    in Q(√h₁, …, √h₅), but grouping those cells also joins cells that are flat for the
-  //    exact points; that attempt made 19 of the 60 unions of the test above fail.
+  // Both need the Delaunay triangulation of the exact boundary vertices (points with a
+  // square root), not of their roundings. And two exactly degenerate unions of the
+  // four-radii generator (125 balls, trial 7; 300 balls, trial 4; 2 of the 70 tried)
+  // get one or two extra closed sheets (b₂), not yet diagnosed.
   MedialAxisStats stats;
-  auto b = axis_betti(four_radii_grid(16, 6), stats);
-  CHECK(b == stats.betti_k);
-  b = axis_betti(perturbed_grid(2, 2, 2, 0.75, 30, 2), stats);
+  auto four = axis_betti(four_radii_grid(125, 7), stats);
+  CHECK(four == stats.betti_k);
+  four = axis_betti(four_radii_grid(300, 4), stats);
+  CHECK(four == stats.betti_k);
+  auto b = axis_betti(perturbed_grid(2, 2, 2, 0.75, 30, 2), stats);
   CHECK(b == stats.betti_k);
   b = axis_betti(perturbed_grid(3, 3, 3, 0.9, 30, 0), stats);
   CHECK(b == stats.betti_k);
