@@ -41,7 +41,7 @@ struct WorkerLists {
   // Scratch of classify_edges and classify_vertex.
   std::vector<StarCell> star;             // the current vertex's star
   std::vector<std::uint32_t> slot_of;     // vertex id → slot of an edge of the current vertex
-  std::vector<std::uint8_t> edge_in_k;    // per slot
+  std::vector<std::uint8_t> edge_in_k;    // per slot: 1 in K by a coface, 2 not in K, 0 open
   std::vector<std::size_t> ring_offsets;  // per slot: its ring entries
   std::vector<std::size_t> ring_fill;
   std::vector<VertexId> ring;             // vertices opposite the edges (with repeats)
@@ -212,7 +212,14 @@ class Classifier {
       }
     }
     for (std::size_t k = 0; k < slots; ++k) out.ring_offsets[k + 1] += out.ring_offsets[k];
-    // Pass 2: the ring vertices of every edge, for the edges no coface put in K.
+    // An edge no coface puts in K whose orthocentre is outside the union (power sign
+    // positive) is not in K whatever its ring: decided without the ring (state 2).
+    for (std::size_t k = 0; k < slots; ++k) {
+      if (out.edge_in_k[k] != 0) continue;
+      const std::array<WeightedPoint, 2> sigma{point(v), point(first[k])};
+      if (orthosphere_power_sign(sigma) == Sign::positive) out.edge_in_k[k] = 2;
+    }
+    // Pass 2: the ring vertices of every edge still undecided.
     out.ring.assign(out.ring_offsets[slots], kInfiniteVertex);
     out.ring_fill.assign(out.ring_offsets.begin(), out.ring_offsets.end() - 1);
     for (const StarCell& local : out.star) {
@@ -232,7 +239,8 @@ class Classifier {
     for (std::size_t k = 0; k < slots; ++k) {
       const VertexId u = first[k];
       ++out.finite[1];
-      bool in_k = out.edge_in_k[k] != 0;
+      if (out.edge_in_k[k] == 2) continue;
+      bool in_k = out.edge_in_k[k] == 1;
       if (!in_k) {
         auto begin = out.ring.begin() + static_cast<std::ptrdiff_t>(out.ring_offsets[k]);
         auto end = out.ring.begin() + static_cast<std::ptrdiff_t>(out.ring_offsets[k + 1]);
