@@ -18,16 +18,12 @@ using triangulation::VertexStars;
 
 constexpr std::size_t kChunk = 2048;
 
-/// A cell of a vertex's star, copied: its vertices and which of its facets are in K.
+/// A cell of a vertex's star, copied: its vertices, the position of the star's vertex
+/// among them, and which of its facets are in K (bit a: the facet opposite vertex a).
 struct StarCell {
   std::array<VertexId, 4> v{};
-  std::array<std::uint8_t, 4> facet_in_k{};
-  int index(VertexId x) const {
-    for (int i = 0; i < 4; ++i) {
-      if (v[static_cast<std::size_t>(i)] == x) return i;
-    }
-    return -1;
-  }
+  std::uint8_t facets_in_k = 0;
+  std::uint8_t iv = 0;
 };
 
 /// What one worker found: simplices of K and counts of the triangulation.
@@ -192,22 +188,24 @@ class Classifier {
     for (std::size_t k = 0; k < cells.size(); ++k) {
       StarCell& local = out.star[k];
       local.v = rt_.vertices(cells[k]);
-      for (std::size_t a = 0; a < 4; ++a) {
-        local.facet_in_k[a] = facet_in_k_[4 * std::size_t{cells[k]} + a];
-      }
+      const std::uint8_t* flags = &facet_in_k_[4 * std::size_t{cells[k]}];
+      local.facets_in_k = static_cast<std::uint8_t>(flags[0] | (flags[1] << 1) |
+                                                    (flags[2] << 2) | (flags[3] << 3));
+      local.iv = static_cast<std::uint8_t>(local.v[1] == v ? 1
+                                           : local.v[2] == v ? 2
+                                           : local.v[3] == v ? 3
+                                                             : 0);
     }
-    // Pass 1: facet flags decide most edges; count the ring entries of the others.
+    // Pass 1: facet flags decide most edges; count the ring entries of the others. The
+    // cofaces of edge (v, u) in a cell are its two facets through v and u: those opposite
+    // the two other vertices.
     for (const StarCell& local : out.star) {
-      const int iv = local.index(v);
       for (int j = 0; j < 4; ++j) {
         const VertexId u = local.v[static_cast<std::size_t>(j)];
-        if (j == iv || u == kInfiniteVertex || u < v) continue;
+        if (j == local.iv || u == kInfiniteVertex || u < v) continue;
         const std::uint32_t slot = slot_of[u];
-        for (int a = 0; a < 4; ++a) {
-          if (a != iv && a != j && local.facet_in_k[static_cast<std::size_t>(a)]) {
-            out.edge_in_k[slot] = 1;
-          }
-        }
+        const unsigned through = (1u << local.iv) | (1u << j);
+        if ((local.facets_in_k & ~through & 0xfu) != 0) out.edge_in_k[slot] = 1;
         out.ring_offsets[slot + 1] += 2;
       }
     }
@@ -223,7 +221,7 @@ class Classifier {
     out.ring.assign(out.ring_offsets[slots], kInfiniteVertex);
     out.ring_fill.assign(out.ring_offsets.begin(), out.ring_offsets.end() - 1);
     for (const StarCell& local : out.star) {
-      const int iv = local.index(v);
+      const int iv = local.iv;
       for (int j = 0; j < 4; ++j) {
         const VertexId u = local.v[static_cast<std::size_t>(j)];
         if (j == iv || u == kInfiniteVertex || u < v) continue;
