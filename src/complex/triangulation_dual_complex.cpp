@@ -1,6 +1,7 @@
 #include "rstruct/complex/triangulation_dual_complex.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@ struct StarCell {
   std::array<VertexId, 4> v{};
   std::uint8_t facets_in_k = 0;
   std::uint8_t iv = 0;
+  std::uint8_t above = 0;  // bit j: v[j] is finite and greater than the star's vertex
 };
 
 /// What one worker found: simplices of K and counts of the triangulation.
@@ -195,14 +197,20 @@ class Classifier {
                                            : local.v[2] == v ? 2
                                            : local.v[3] == v ? 3
                                                              : 0);
+      unsigned above = 0;
+      for (unsigned j = 0; j < 4; ++j) {
+        const VertexId u = local.v[j];
+        above |= static_cast<unsigned>(u > v && u != kInfiniteVertex) << j;
+      }
+      local.above = static_cast<std::uint8_t>(above);
     }
     // Pass 1: facet flags decide most edges; count the ring entries of the others. The
     // cofaces of edge (v, u) in a cell are its two facets through v and u: those opposite
     // the two other vertices.
     for (const StarCell& local : out.star) {
-      for (int j = 0; j < 4; ++j) {
+      for (unsigned m = local.above; m != 0; m &= m - 1) {
+        const int j = std::countr_zero(m);
         const VertexId u = local.v[static_cast<std::size_t>(j)];
-        if (j == local.iv || u == kInfiniteVertex || u < v) continue;
         const std::uint32_t slot = slot_of[u];
         const unsigned through = (1u << local.iv) | (1u << j);
         if ((local.facets_in_k & ~through & 0xfu) != 0) out.edge_in_k[slot] = 1;
@@ -221,17 +229,17 @@ class Classifier {
     out.ring.assign(out.ring_offsets[slots], kInfiniteVertex);
     out.ring_fill.assign(out.ring_offsets.begin(), out.ring_offsets.end() - 1);
     for (const StarCell& local : out.star) {
-      const int iv = local.iv;
-      for (int j = 0; j < 4; ++j) {
-        const VertexId u = local.v[static_cast<std::size_t>(j)];
-        if (j == iv || u == kInfiniteVertex || u < v) continue;
-        const std::uint32_t slot = slot_of[u];
+      for (unsigned m = local.above; m != 0; m &= m - 1) {
+        const int j = std::countr_zero(m);
+        const std::uint32_t slot = slot_of[local.v[static_cast<std::size_t>(j)]];
         if (out.edge_in_k[slot]) continue;
-        for (int a = 0; a < 4; ++a) {
-          if (a != iv && a != j) {
-            out.ring[out.ring_fill[slot]++] = local.v[static_cast<std::size_t>(a)];
-          }
-        }
+        // The two vertices other than v and u.
+        unsigned others = 0xfu & ~((1u << local.iv) | (1u << j));
+        const int a = std::countr_zero(others);
+        others &= others - 1;
+        const int b = std::countr_zero(others);
+        out.ring[out.ring_fill[slot]++] = local.v[static_cast<std::size_t>(a)];
+        out.ring[out.ring_fill[slot]++] = local.v[static_cast<std::size_t>(b)];
       }
     }
     for (std::size_t k = 0; k < slots; ++k) {
