@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "rstruct/complex/orthosphere_predicates.hpp"
 #include "rstruct/core/report.hpp"
 #include "rstruct/pipeline/seed_polytope.hpp"
 #include "rstruct/poles/pole_analysis.hpp"
@@ -173,6 +174,7 @@ int main(int argc, char** argv) {
         options.candidates = previous_kept;
       }
       Report report;
+      rstruct::complex::reset_orthosphere_predicate_counters();
       const auto seed =
           rstruct::pipeline::compute_seed_polytope(samples, analysis, options, &report);
       level_times[l].add(report);
@@ -191,6 +193,10 @@ int main(int argc, char** argv) {
                     seed.manifold.is_closed_2_manifold ? "closed 2-manifold" : "NOT a manifold",
                     seed.remapped_samples);
       checksums[l] = line;
+      const auto counters = rstruct::complex::orthosphere_predicate_counters();
+      std::fprintf(stderr, "run %d level %zu: orthosphere predicates %llu filtered, %llu exact\n",
+                   run + 1, l + 1, static_cast<unsigned long long>(counters.filtered),
+                   static_cast<unsigned long long>(counters.exact));
       std::fprintf(stderr, "run %d level %zu: %.3f s cpu; %s\n", run + 1, l + 1,
                    level_times[l].total_cpu.back(), line);
     }

@@ -4,15 +4,19 @@
 
 #include <array>
 #include <atomic>
+#include <optional>
 #include <string>
+#include <type_traits>
 
 #include "complex/filtered_number.hpp"
+#include "complex/rounded_leaf_number.hpp"
 #include "rstruct/core/error.hpp"
 
 namespace rstruct::complex {
 namespace {
 
 using detail::FilteredNumber;
+using detail::RoundedLeafNumber;
 
 std::atomic<std::uint64_t> g_filtered{0};
 std::atomic<std::uint64_t> g_exact{0};
@@ -22,16 +26,20 @@ using V3 = std::array<N, 3>;
 
 /// a − b of two input doubles (the filter turns exact differences into exact leaves).
 template <class N>
-N difference(double a, double b) {
+RSTRUCT_COMPLEX_INLINE N difference(double a, double b) {
   return N(a) - N(b);
 }
 template <>
 FilteredNumber difference<FilteredNumber>(double a, double b) {
   return FilteredNumber::difference(a, b);
 }
+template <>
+RSTRUCT_COMPLEX_INLINE RoundedLeafNumber difference<RoundedLeafNumber>(double a, double b) {
+  return RoundedLeafNumber::difference(a, b);
+}
 
 template <class N>
-N dot(const V3<N>& x, const V3<N>& y) {
+RSTRUCT_COMPLEX_INLINE N dot(const V3<N>& x, const V3<N>& y) {
   N s = x[0] * y[0];
   s += x[1] * y[1];
   s += x[2] * y[2];
@@ -39,12 +47,12 @@ N dot(const V3<N>& x, const V3<N>& y) {
 }
 
 template <class N>
-V3<N> cross(const V3<N>& x, const V3<N>& y) {
+RSTRUCT_COMPLEX_INLINE V3<N> cross(const V3<N>& x, const V3<N>& y) {
   return {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
 }
 
 template <class N>
-V3<N> combine(const N& a, const V3<N>& x, const N& b, const V3<N>& y) {  // a x − b y
+RSTRUCT_COMPLEX_INLINE V3<N> combine(const N& a, const V3<N>& x, const N& b, const V3<N>& y) {  // a x − b y
   return {a * x[0] - b * y[0], a * x[1] - b * y[1], a * x[2] - b * y[2]};
 }
 
@@ -56,7 +64,9 @@ V3<N> combine(const N& a, const V3<N>& x, const N& b, const V3<N>& y) {  // a x 
 ///          adj(G) b = (a × n) in the basis sense: g_pᵀ adj(G) b = ⟨u_p, a × n⟩;
 ///   k = 3: bᵀ adj(G) b = |v|², v = b₁ u₂×u₃ + b₂ u₃×u₁ + b₃ u₁×u₂; D = det(u₁,u₂,u₃)².
 /// (Cramer's rule for z − c₀ in aff(σ); the k = 2 identity is the vector triple product.)
-template <class N>
+/// KC ≥ 0 fixes k = KC at compile time (the filter's fast stage); KC = −1 reads it from
+/// the simplex.
+template <class N, int KC = -1>
 struct OrthoSystem {
   int k = 0;
   std::array<V3<N>, 3> u;  // u_i = c_i − c₀
@@ -64,35 +74,61 @@ struct OrthoSystem {
   V3<N> origin;            // c₀
   N w0;
   WeightedPoint first;
+  // Shared by degeneracy(), power() and attachment() (computed once; the same
+  // expressions, so the same values, as when each computed its own):
+  N uu;      // k = 1: |u₁|²
+  V3<N> n;   // k = 2: u₁ × u₂
+  N nn;      // k = 2: |n|²
+  V3<N> a;   // k = 2: b₁u₂ − b₂u₁
+  V3<N> axn; // k = 2: a × n
+  bool safe_leaves = true;  // RoundedLeafNumber only: every leaf passed is_safe_leaf
 
-  explicit OrthoSystem(std::span<const WeightedPoint> sigma)
-      : k(static_cast<int>(sigma.size()) - 1), first(sigma[0]) {
+  RSTRUCT_COMPLEX_INLINE int dim() const {
+    if constexpr (KC >= 0) {
+      return KC;
+    } else {
+      return k;
+    }
+  }
+
+  RSTRUCT_COMPLEX_INLINE explicit OrthoSystem(std::span<const WeightedPoint> sigma)
+      : k(KC >= 0 ? KC : static_cast<int>(sigma.size()) - 1), first(sigma[0]) {
     for (int j = 0; j < 3; ++j) origin[j] = N(sigma[0].c[j]);
     w0 = N(sigma[0].w);
-    for (int i = 0; i < k; ++i) {
+    if constexpr (std::is_same_v<N, RoundedLeafNumber>) {
+      safe_leaves = RoundedLeafNumber::is_safe_leaf(sigma[0].w);
+    }
+    for (int i = 0; i < dim(); ++i) {
       for (int j = 0; j < 3; ++j) u[i][j] = difference<N>(sigma[i + 1].c[j], sigma[0].c[j]);
-      b[i] = dot(u[i], u[i]) - difference<N>(sigma[i + 1].w, sigma[0].w);
+      const N dw = difference<N>(sigma[i + 1].w, sigma[0].w);
+      b[i] = dot(u[i], u[i]) - dw;
+      if constexpr (std::is_same_v<N, RoundedLeafNumber>) {
+        safe_leaves = safe_leaves && RoundedLeafNumber::is_safe_leaf(u[i][0].v) &&
+                      RoundedLeafNumber::is_safe_leaf(u[i][1].v) &&
+                      RoundedLeafNumber::is_safe_leaf(u[i][2].v) &&
+                      RoundedLeafNumber::is_safe_leaf(dw.v);
+      }
+    }
+    if (dim() == 1) uu = dot(u[0], u[0]);
+    if (dim() == 2) {
+      n = cross(u[0], u[1]);
+      nn = dot(n, n);
+      a = combine(b[0], u[1], b[1], u[0]);
+      axn = cross(a, n);
     }
   }
 
   /// Zero iff the points are affinely dependent (|u₁|², |n|² or the determinant).
-  N degeneracy() const {
-    if (k == 1) return dot(u[0], u[0]);
-    if (k == 2) {
-      const V3<N> n = cross(u[0], u[1]);
-      return dot(n, n);
-    }
+  RSTRUCT_COMPLEX_INLINE N degeneracy() const {
+    if (dim() == 1) return uu;
+    if (dim() == 2) return nn;
     return dot(u[0], cross(u[1], u[2]));
   }
 
   /// Of the sign of π_σ(z_σ): bᵀ adj(G) b − 4 D w₀.
-  N power() const {
-    if (k == 1) return b[0] * b[0] - N(4.0) * dot(u[0], u[0]) * w0;
-    if (k == 2) {
-      const V3<N> a = combine(b[0], u[1], b[1], u[0]);
-      const V3<N> n = cross(u[0], u[1]);
-      return dot(a, a) - N(4.0) * dot(n, n) * w0;
-    }
+  RSTRUCT_COMPLEX_INLINE N power() const {
+    if (dim() == 1) return b[0] * b[0] - N(4.0) * uu * w0;
+    if (dim() == 2) return dot(a, a) - N(4.0) * nn * w0;
     const V3<N> c0 = cross(u[1], u[2]);
     const V3<N> c1 = cross(u[2], u[0]);
     const V3<N> c2 = cross(u[0], u[1]);
@@ -102,15 +138,24 @@ struct OrthoSystem {
     return dot(v, v) - N(4.0) * det * det * w0;
   }
 
-  /// Of the sign of π_p(z_σ) − π_σ(z_σ): D b_p − g_pᵀ adj(G) b (k = 1, 2).
-  N attachment(const WeightedPoint& p) const {
+  /// Of the sign of π_p(z_σ) − π_σ(z_σ): D b_p − g_pᵀ adj(G) b (k = 1, 2). For
+  /// RoundedLeafNumber, `safe` is cleared if one of p's leaves fails is_safe_leaf.
+  RSTRUCT_COMPLEX_INLINE N attachment(const WeightedPoint& p, bool& safe) const {
     V3<N> up;
     for (int j = 0; j < 3; ++j) up[j] = difference<N>(p.c[j], first.c[j]);
-    const N bp = dot(up, up) - difference<N>(p.w, first.w);
-    if (k == 1) return dot(u[0], u[0]) * bp - dot(u[0], up) * b[0];
-    const V3<N> a = combine(b[0], u[1], b[1], u[0]);
-    const V3<N> n = cross(u[0], u[1]);
-    return dot(n, n) * bp - dot(up, cross(a, n));
+    const N dw = difference<N>(p.w, first.w);
+    if constexpr (std::is_same_v<N, RoundedLeafNumber>) {
+      safe = RoundedLeafNumber::is_safe_leaf(up[0].v) &&
+             RoundedLeafNumber::is_safe_leaf(up[1].v) &&
+             RoundedLeafNumber::is_safe_leaf(up[2].v) && RoundedLeafNumber::is_safe_leaf(dw.v);
+    }
+    const N bp = dot(up, up) - dw;
+    if (dim() == 1) return uu * bp - dot(u[0], up) * b[0];
+    return nn * bp - dot(up, axn);
+  }
+  N attachment(const WeightedPoint& p) const {
+    bool safe = true;
+    return attachment(p, safe);
   }
 };
 
@@ -127,6 +172,26 @@ void require_independent(const mpq_class& degeneracy) {
   if (sgn(degeneracy) == 0) {
     throw InvalidInput("orthosphere predicate: the points of the simplex are affinely dependent");
   }
+}
+
+/// The fast stage of orthosphere_power_sign for |σ| = KC + 1: the sign, or 2.
+template <int KC>
+int fast_power_sign(std::span<const WeightedPoint> sigma) {
+  const OrthoSystem<RoundedLeafNumber, KC> s(sigma);
+  if (!s.safe_leaves) return 2;
+  const int nondegenerate = s.degeneracy().certified_sign();
+  if (nondegenerate != 1 && nondegenerate != -1) return 2;
+  return s.power().certified_sign();
+}
+
+/// The fast stage of orthosphere_attachment_sign for |σ| = KC + 1 ≥ 2: the sign, or 2.
+template <int KC>
+int fast_attachment_sign(std::span<const WeightedPoint> sigma, const WeightedPoint& p) {
+  const OrthoSystem<RoundedLeafNumber, KC> s(sigma);
+  if (!s.safe_leaves || s.degeneracy().certified_sign() != 1) return 2;
+  bool safe = true;
+  const RoundedLeafNumber value = s.attachment(p, safe);
+  return safe ? value.certified_sign() : 2;
 }
 
 }  // namespace
@@ -155,6 +220,13 @@ Sign orthosphere_attachment_sign_exact(std::span<const WeightedPoint> sigma,
 Sign orthosphere_power_sign(std::span<const WeightedPoint> sigma) {
   check_size(sigma, 4);
   if (sigma.size() == 1) return -sign_of(sigma[0].w);
+  const int fast = sigma.size() == 4   ? fast_power_sign<3>(sigma)
+                   : sigma.size() == 3 ? fast_power_sign<2>(sigma)
+                                       : fast_power_sign<1>(sigma);
+  if (fast != 2) {
+    g_filtered.fetch_add(1, std::memory_order_relaxed);
+    return static_cast<Sign>(fast);
+  }
   const OrthoSystem<FilteredNumber> s(sigma);
   const int nondegenerate = s.degeneracy().certified_sign();
   if (nondegenerate == 1 || nondegenerate == -1) {
@@ -171,13 +243,21 @@ Sign orthosphere_power_sign(std::span<const WeightedPoint> sigma) {
 Sign orthosphere_attachment_sign(std::span<const WeightedPoint> sigma, const WeightedPoint& p) {
   check_size(sigma, 3);
   if (sigma.size() == 1) {
-    const OrthoSystem<FilteredNumber> s(std::array<WeightedPoint, 2>{sigma[0], p});
-    const int sign = s.b[0].certified_sign();
+    const std::array<WeightedPoint, 2> pair{sigma[0], p};
+    const OrthoSystem<RoundedLeafNumber, 1> fast(pair);
+    int sign = fast.safe_leaves ? fast.b[0].certified_sign() : 2;
+    if (sign == 2) sign = OrthoSystem<FilteredNumber>(pair).b[0].certified_sign();
     if (sign != 2) {
       g_filtered.fetch_add(1, std::memory_order_relaxed);
       return static_cast<Sign>(sign);
     }
   } else {
+    const int fast = sigma.size() == 3 ? fast_attachment_sign<2>(sigma, p)
+                                       : fast_attachment_sign<1>(sigma, p);
+    if (fast != 2) {
+      g_filtered.fetch_add(1, std::memory_order_relaxed);
+      return static_cast<Sign>(fast);
+    }
     const OrthoSystem<FilteredNumber> s(sigma);
     if (s.degeneracy().certified_sign() == 1) {
       const int sign = s.attachment(p).certified_sign();
@@ -191,22 +271,32 @@ Sign orthosphere_attachment_sign(std::span<const WeightedPoint> sigma, const Wei
   return orthosphere_attachment_sign_exact(sigma, p);
 }
 
-bool orthosphere_is_unattached_in_union(std::span<const WeightedPoint> sigma,
-                                        std::span<const WeightedPoint> opposite) {
-  check_size(sigma, 3);
-  if (sigma.size() == 1) {
-    if (orthosphere_power_sign(sigma) == Sign::positive) return false;
-    for (const WeightedPoint& p : opposite) {
-      if (orthosphere_attachment_sign(sigma, p) == Sign::negative) return false;
+namespace {
+
+/// orthosphere_is_unattached_in_union for |σ| = KC + 1 ≥ 2. Stage 1: RoundedLeafNumber
+/// (cheap); stage 2: FilteredNumber, built on first need; stage 3: exact.
+template <int KC>
+bool unattached_in_union(std::span<const WeightedPoint> sigma,
+                         std::span<const WeightedPoint> opposite) {
+  const OrthoSystem<RoundedLeafNumber, KC> fast(sigma);
+  const bool fast_independent = fast.safe_leaves && fast.degeneracy().certified_sign() == 1;
+  std::optional<OrthoSystem<FilteredNumber>> slow;
+  bool slow_independent = false;
+  const auto slow_system = [&]() -> const OrthoSystem<FilteredNumber>& {
+    if (!slow) {
+      slow.emplace(sigma);
+      slow_independent = slow->degeneracy().certified_sign() == 1;
     }
-    return true;
-  }
-  const OrthoSystem<FilteredNumber> s(sigma);
-  const bool independent = s.degeneracy().certified_sign() == 1;
+    return *slow;
+  };
   std::uint64_t filtered = 0;
   std::uint64_t exact = 0;
   bool result = true;
-  int power = independent ? s.power().certified_sign() : 2;
+  int power = fast_independent ? fast.power().certified_sign() : 2;
+  if (power == 2) {
+    const OrthoSystem<FilteredNumber>& s = slow_system();
+    power = slow_independent ? s.power().certified_sign() : 2;
+  }
   if (power == 2) {
     ++exact;
     power = static_cast<int>(orthosphere_power_sign_exact(sigma));
@@ -215,7 +305,16 @@ bool orthosphere_is_unattached_in_union(std::span<const WeightedPoint> sigma,
   }
   if (power == 1) result = false;
   for (std::size_t k = 0; result && k < opposite.size(); ++k) {
-    int sign = independent ? s.attachment(opposite[k]).certified_sign() : 2;
+    int sign = 2;
+    if (fast_independent) {
+      bool safe = true;
+      const RoundedLeafNumber value = fast.attachment(opposite[k], safe);
+      if (safe) sign = value.certified_sign();
+    }
+    if (sign == 2) {
+      const OrthoSystem<FilteredNumber>& s = slow_system();
+      sign = slow_independent ? s.attachment(opposite[k]).certified_sign() : 2;
+    }
     if (sign == 2) {
       ++exact;
       sign = static_cast<int>(orthosphere_attachment_sign_exact(sigma, opposite[k]));
@@ -227,6 +326,22 @@ bool orthosphere_is_unattached_in_union(std::span<const WeightedPoint> sigma,
   g_filtered.fetch_add(filtered, std::memory_order_relaxed);
   if (exact != 0) g_exact.fetch_add(exact, std::memory_order_relaxed);
   return result;
+}
+
+}  // namespace
+
+bool orthosphere_is_unattached_in_union(std::span<const WeightedPoint> sigma,
+                                        std::span<const WeightedPoint> opposite) {
+  check_size(sigma, 3);
+  if (sigma.size() == 1) {
+    if (orthosphere_power_sign(sigma) == Sign::positive) return false;
+    for (const WeightedPoint& p : opposite) {
+      if (orthosphere_attachment_sign(sigma, p) == Sign::negative) return false;
+    }
+    return true;
+  }
+  return sigma.size() == 2 ? unattached_in_union<1>(sigma, opposite)
+                          : unattached_in_union<2>(sigma, opposite);
 }
 
 OrthospherePredicateCounters orthosphere_predicate_counters() {

@@ -1,6 +1,7 @@
 #include "rstruct/complex/triangulation_dual_complex.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <string>
 #include <vector>
 
@@ -18,16 +19,13 @@ using triangulation::VertexStars;
 
 constexpr std::size_t kChunk = 2048;
 
-/// A cell of a vertex's star, copied: its vertices and which of its facets are in K.
+/// A cell of a vertex's star, copied: its vertices, the position of the star's vertex
+/// among them, and which of its facets are in K (bit a: the facet opposite vertex a).
 struct StarCell {
   std::array<VertexId, 4> v{};
-  std::array<std::uint8_t, 4> facet_in_k{};
-  int index(VertexId x) const {
-    for (int i = 0; i < 4; ++i) {
-      if (v[static_cast<std::size_t>(i)] == x) return i;
-    }
-    return -1;
-  }
+  std::uint8_t facets_in_k = 0;
+  std::uint8_t iv = 0;
+  std::uint8_t above = 0;  // bit j: v[j] is finite and greater than the star's vertex
 };
 
 /// What one worker found: simplices of K and counts of the triangulation.
@@ -41,7 +39,7 @@ struct WorkerLists {
   // Scratch of classify_edges and classify_vertex.
   std::vector<StarCell> star;             // the current vertex's star
   std::vector<std::uint32_t> slot_of;     // vertex id → slot of an edge of the current vertex
-  std::vector<std::uint8_t> edge_in_k;    // per slot
+  std::vector<std::uint8_t> edge_in_k;    // per slot: 1 in K by a coface, 2 not in K, 0 open
   std::vector<std::size_t> ring_offsets;  // per slot: its ring entries
   std::vector<std::size_t> ring_fill;
   std::vector<VertexId> ring;             // vertices opposite the edges (with repeats)
@@ -192,47 +190,63 @@ class Classifier {
     for (std::size_t k = 0; k < cells.size(); ++k) {
       StarCell& local = out.star[k];
       local.v = rt_.vertices(cells[k]);
-      for (std::size_t a = 0; a < 4; ++a) {
-        local.facet_in_k[a] = facet_in_k_[4 * std::size_t{cells[k]} + a];
+      const std::uint8_t* flags = &facet_in_k_[4 * std::size_t{cells[k]}];
+      local.facets_in_k = static_cast<std::uint8_t>(flags[0] | (flags[1] << 1) |
+                                                    (flags[2] << 2) | (flags[3] << 3));
+      local.iv = static_cast<std::uint8_t>(local.v[1] == v ? 1
+                                           : local.v[2] == v ? 2
+                                           : local.v[3] == v ? 3
+                                                             : 0);
+      unsigned above = 0;
+      for (unsigned j = 0; j < 4; ++j) {
+        const VertexId u = local.v[j];
+        above |= static_cast<unsigned>(u > v && u != kInfiniteVertex) << j;
       }
+      local.above = static_cast<std::uint8_t>(above);
     }
-    // Pass 1: facet flags decide most edges; count the ring entries of the others.
+    // Pass 1: facet flags decide most edges; count the ring entries of the others. The
+    // cofaces of edge (v, u) in a cell are its two facets through v and u: those opposite
+    // the two other vertices.
     for (const StarCell& local : out.star) {
-      const int iv = local.index(v);
-      for (int j = 0; j < 4; ++j) {
+      for (unsigned m = local.above; m != 0; m &= m - 1) {
+        const int j = std::countr_zero(m);
         const VertexId u = local.v[static_cast<std::size_t>(j)];
-        if (j == iv || u == kInfiniteVertex || u < v) continue;
         const std::uint32_t slot = slot_of[u];
-        for (int a = 0; a < 4; ++a) {
-          if (a != iv && a != j && local.facet_in_k[static_cast<std::size_t>(a)]) {
-            out.edge_in_k[slot] = 1;
-          }
-        }
+        const unsigned through = (1u << local.iv) | (1u << j);
+        if ((local.facets_in_k & ~through & 0xfu) != 0) out.edge_in_k[slot] = 1;
         out.ring_offsets[slot + 1] += 2;
       }
     }
     for (std::size_t k = 0; k < slots; ++k) out.ring_offsets[k + 1] += out.ring_offsets[k];
-    // Pass 2: the ring vertices of every edge, for the edges no coface put in K.
+    // An edge no coface puts in K whose orthocentre is outside the union (power sign
+    // positive) is not in K whatever its ring: decided without the ring (state 2).
+    for (std::size_t k = 0; k < slots; ++k) {
+      if (out.edge_in_k[k] != 0) continue;
+      const std::array<WeightedPoint, 2> sigma{point(v), point(first[k])};
+      if (orthosphere_power_sign(sigma) == Sign::positive) out.edge_in_k[k] = 2;
+    }
+    // Pass 2: the ring vertices of every edge still undecided.
     out.ring.assign(out.ring_offsets[slots], kInfiniteVertex);
     out.ring_fill.assign(out.ring_offsets.begin(), out.ring_offsets.end() - 1);
     for (const StarCell& local : out.star) {
-      const int iv = local.index(v);
-      for (int j = 0; j < 4; ++j) {
-        const VertexId u = local.v[static_cast<std::size_t>(j)];
-        if (j == iv || u == kInfiniteVertex || u < v) continue;
-        const std::uint32_t slot = slot_of[u];
+      for (unsigned m = local.above; m != 0; m &= m - 1) {
+        const int j = std::countr_zero(m);
+        const std::uint32_t slot = slot_of[local.v[static_cast<std::size_t>(j)]];
         if (out.edge_in_k[slot]) continue;
-        for (int a = 0; a < 4; ++a) {
-          if (a != iv && a != j) {
-            out.ring[out.ring_fill[slot]++] = local.v[static_cast<std::size_t>(a)];
-          }
-        }
+        // The two vertices other than v and u.
+        unsigned others = 0xfu & ~((1u << local.iv) | (1u << j));
+        const int a = std::countr_zero(others);
+        others &= others - 1;
+        const int b = std::countr_zero(others);
+        out.ring[out.ring_fill[slot]++] = local.v[static_cast<std::size_t>(a)];
+        out.ring[out.ring_fill[slot]++] = local.v[static_cast<std::size_t>(b)];
       }
     }
     for (std::size_t k = 0; k < slots; ++k) {
       const VertexId u = first[k];
       ++out.finite[1];
-      bool in_k = out.edge_in_k[k] != 0;
+      if (out.edge_in_k[k] == 2) continue;
+      bool in_k = out.edge_in_k[k] == 1;
       if (!in_k) {
         auto begin = out.ring.begin() + static_cast<std::ptrdiff_t>(out.ring_offsets[k]);
         auto end = out.ring.begin() + static_cast<std::ptrdiff_t>(out.ring_offsets[k + 1]);

@@ -87,11 +87,6 @@ bool RegularTriangulation3::is_infinite(const Edge& e) const {
   return vertex(e.cell, e.i) == kInfiniteVertex || vertex(e.cell, e.j) == kInfiniteVertex;
 }
 
-std::array<VertexId, 4> RegularTriangulation3::vertices(CellId c) const {
-  const Cell& k = cells_[c];
-  return {k.v[0], k.v[1], k.v[2], k.v[3]};
-}
-
 int RegularTriangulation3::index(CellId c, VertexId v) const {
   const Cell& k = cells_[c];
   for (int i = 0; i < 4; ++i) {

@@ -177,3 +177,45 @@ TEST_CASE("signs are invariant under permutation, translation and scaling by 2")
     }
   });
 }
+
+TEST_CASE("scales around the first filter stage's leaf bound agree with the exact stage") {
+  // RoundedLeafNumber decides only when every leaf is 0 or at least 2^-75 in magnitude;
+  // below, the next stages decide. Scales from 2^-60 to 2^-90 put the differences on both
+  // sides of that bound; near-ties (a fourth point pushed onto the orthosphere) force
+  // uncertified signs through the later stages.
+  rc::prop("scaled and near-tie inputs", [] {
+    const int exponent = *rc::gen::inRange(-90, -59);
+    const double scale = std::ldexp(1.0, exponent);
+    const auto k = *rc::gen::inRange(2, 5);
+    std::vector<WeightedPoint> s;
+    for (int i = 0; i < k; ++i) {
+      const WeightedPoint p = *weighted_point(*rc::gen::arbitrary<bool>());
+      s.push_back({{p.c.x * scale, p.c.y * scale, p.c.z * scale}, p.w * scale * scale});
+    }
+    const WeightedPoint p0 = *weighted_point(false);
+    const WeightedPoint p{{p0.c.x * scale, p0.c.y * scale, p0.c.z * scale}, p0.w * scale * scale};
+    Sign exact;
+    try {
+      exact = orthosphere_power_sign_exact(s);
+    } catch (const InvalidInput&) {
+      RC_ASSERT_THROWS_AS(orthosphere_power_sign(s), InvalidInput);
+      return;
+    }
+    RC_ASSERT(orthosphere_power_sign(s) == exact);
+    if (k <= 3) {
+      const Sign attach = orthosphere_attachment_sign_exact(s, p);
+      RC_ASSERT(orthosphere_attachment_sign(s, p) == attach);
+      // A (near) tie: σ's second point with its weight moved by 0 or one unit in the last
+      // place: π_p(z_σ) − π_σ(z_σ) = w₁ − w_p, zero or tiny against the other terms.
+      WeightedPoint tie = s[1];
+      const int step = *rc::gen::inRange(-1, 2);
+      if (step != 0) tie.w = std::nextafter(tie.w, step > 0 ? 1e300 : -1e300);
+      RC_ASSERT(orthosphere_attachment_sign(s, tie) == orthosphere_attachment_sign_exact(s, tie));
+      const std::vector<WeightedPoint> opposite{p, tie};
+      const bool expected = exact != Sign::positive &&
+                            orthosphere_attachment_sign_exact(s, p) != Sign::negative &&
+                            orthosphere_attachment_sign_exact(s, tie) != Sign::negative;
+      RC_ASSERT(orthosphere_is_unattached_in_union(s, opposite) == expected);
+    }
+  });
+}

@@ -12,8 +12,10 @@
 ///   π_σ(z_σ)            = (bᵀ adj(G) b − 4 D w₀) / (4 D),
 ///   π_p(z_σ) − π_σ(z_σ) = (D b_p − g_pᵀ adj(G) b) / D,  g_p = (⟨u_i, c_p − c₀⟩)_i,
 ///                         b_p = |c_p − c₀|² − w_p + w₀.
-/// Both signs are decided exactly: a floating-point evaluation with a certified error bound
-/// first, then exact rational (GMP) evaluation of the same polynomial. No perturbation:
+/// Both signs are decided exactly: floating-point evaluations with a certified error bound
+/// first (a cheap one whose underflow guard is a test on the leaves, then one that tracks
+/// underflow per operation; src/complex/rounded_leaf_number.hpp, filtered_number.hpp),
+/// then exact rational (GMP) evaluation of the same polynomial. No perturbation:
 /// the dual complex at α = 0 is a well-defined geometric object, ties included.
 ///
 /// These live in the complex module because the shared filtered/exact facility of

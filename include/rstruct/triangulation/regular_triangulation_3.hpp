@@ -190,7 +190,10 @@ class RegularTriangulation3 {
 
   /// Vertex i (0..3) of cell c. \pre is_cell(c).
   VertexId vertex(CellId c, int i) const { return cells_[c].v[i]; }
-  std::array<VertexId, 4> vertices(CellId c) const;
+  std::array<VertexId, 4> vertices(CellId c) const {
+    const Cell& k = cells_[c];
+    return {k.v[0], k.v[1], k.v[2], k.v[3]};
+  }
   /// The neighbour of c across its facet i.
   CellId neighbor(CellId c, int i) const { return cells_[c].n[i] >> 2; }
   /// The index of c's facet i in neighbor(c, i): neighbor(neighbor(c,i), mirror_index(c,i)) == c.

@@ -56,8 +56,13 @@ struct LiftedRows {
 /// the other three rows' (x, y, z) in order. With rows p − e and l = |p − e|² − (w_p − w_e)
 /// this is minus the 5×5 lifted determinant det[(p, |p|² − w_p, 1)] of a, b, c, d, e
 /// (see predicates.hpp for the sign convention it produces).
+/// Always inlined: the filters' rows then stay in registers (the triangulation's conflict
+/// test calls it for every cell it visits); inlining does not change the evaluation order.
 template <class T>
-T lifted_det4_negated(const LiftedRows<T>& r) {
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+inline T lifted_det4_negated(const LiftedRows<T>& r) {
   const T m_ab = minor2(r.ax, r.ay, r.bx, r.by);
   const T m_ac = minor2(r.ax, r.ay, r.cx, r.cy);
   const T m_ad = minor2(r.ax, r.ay, r.dx, r.dy);
