@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
@@ -737,13 +738,18 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
       while (group[c] != c) c = group[c] = group[group[c]];
       return c;
     };
+    std::vector<std::int8_t> flat_cell(del.cell_capacity(), -1);  // −1: not yet decided
     auto flat = [&](CellId x) {
-      const auto w = del.vertices(x);
-      IdSet common = site[w[0]].tags;
-      for (int q = 1; q < 4; ++q) common = intersect(common, site[w[q]].tags);
-      return common.size >= 2 ||
-             (maybe_coplanar({del.point(w[0]), del.point(w[1]), del.point(w[2]), del.point(w[3])}) &&
-              exactly_coplanar({&bv[w[0]], &bv[w[1]], &bv[w[2]], &bv[w[3]]}, balls));
+      if (flat_cell[x] < 0) {
+        const auto w = del.vertices(x);
+        IdSet common = site[w[0]].tags;
+        for (int q = 1; q < 4; ++q) common = intersect(common, site[w[q]].tags);
+        flat_cell[x] =
+            common.size >= 2 ||
+            (maybe_coplanar({del.point(w[0]), del.point(w[1]), del.point(w[2]), del.point(w[3])}) &&
+             exactly_coplanar({&bv[w[0]], &bv[w[1]], &bv[w[2]], &bv[w[3]]}, balls));
+      }
+      return flat_cell[x] == 1;
     };
     auto exact_cospherical = [&](const std::array<std::uint32_t, 4>& vs, CellId c, CellId nb,
                                  std::uint32_t apex) {
