@@ -138,9 +138,94 @@ struct Field {
   Radical mul(const Radical& a, const Radical& b) const { return a.times(b, KR); }
 };
 
+/// A closed interval with outward rounding: every operation's rounded-to-nearest result
+/// is widened by one ulp on each side (IEEE operations and sqrt are correctly rounded, so
+/// the exact result lies within one ulp). Used only to prove a determinant non-zero.
+struct Interval {
+  double lo = 0, hi = 0;
+  Interval() = default;
+  explicit Interval(double x) : lo(x), hi(x) {}
+  Interval(double l, double h) : lo(l), hi(h) {}
+  static Interval widen(double l, double h) {
+    return {std::nextafter(l, -INFINITY), std::nextafter(h, INFINITY)};
+  }
+  friend Interval operator+(const Interval& a, const Interval& b) {
+    return widen(a.lo + b.lo, a.hi + b.hi);
+  }
+  friend Interval operator-(const Interval& a, const Interval& b) {
+    return widen(a.lo - b.hi, a.hi - b.lo);
+  }
+  friend Interval operator*(const Interval& a, const Interval& b) {
+    const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+    return widen(*std::min_element(p, p + 4), *std::max_element(p, p + 4));
+  }
+  /// \pre b excludes 0.
+  friend Interval operator/(const Interval& a, const Interval& b) {
+    const double p[4] = {a.lo / b.lo, a.lo / b.hi, a.hi / b.lo, a.hi / b.hi};
+    return widen(*std::min_element(p, p + 4), *std::max_element(p, p + 4));
+  }
+  bool excludes_zero() const { return lo > 0 || hi < 0; }
+  bool finite() const { return std::isfinite(lo) && std::isfinite(hi); }
+};
+
+Interval widen_sqrt(const Interval& h) {
+  return Interval::widen(std::sqrt(std::max(h.lo, 0.0)), std::sqrt(h.hi));
+}
+
+using I3 = std::array<Interval, 3>;
+
+Interval idot(const I3& a, const I3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/// An enclosure of the exact point of a boundary vertex (the construction of exact_vertex,
+/// in intervals); false if it cannot be formed (a denominator or h may contain zero).
+bool enclose(const BoundaryVertex& v, std::span<const Ball> balls, I3& out) {
+  const Ball& bi = balls[v.balls[0]];
+  const Ball& bj = balls[v.balls[1]];
+  const Ball& bk = balls[v.balls[2]];
+  const I3 ci{Interval(bi.c.x), Interval(bi.c.y), Interval(bi.c.z)};
+  const I3 u{Interval(bj.c.x) - ci[0], Interval(bj.c.y) - ci[1], Interval(bj.c.z) - ci[2]};
+  const I3 w{Interval(bk.c.x) - ci[0], Interval(bk.c.y) - ci[1], Interval(bk.c.z) - ci[2]};
+  const Interval ri2 = Interval(bi.r) * Interval(bi.r), rj2 = Interval(bj.r) * Interval(bj.r),
+                 rk2 = Interval(bk.r) * Interval(bk.r);
+  const Interval uu = idot(u, u), uw = idot(u, w), ww = idot(w, w), half(0.5);
+  const Interval bu = (uu - rj2 + ri2) * half, bw = (ww - rk2 + ri2) * half;
+  const Interval det = uu * ww - uw * uw;
+  if (!det.excludes_zero()) return false;
+  const Interval alpha = (bu * ww - bw * uw) / det, beta = (bw * uu - bu * uw) / det;
+  I3 z, n;
+  for (int a = 0; a < 3; ++a) z[a] = alpha * u[a] + beta * w[a];
+  n = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+  const Interval nn = idot(n, n);
+  if (!nn.excludes_zero()) return false;
+  const Interval h = (ri2 - idot(z, z)) / nn;
+  if (!(h.hi >= 0)) return false;
+  const Interval root = widen_sqrt(h);
+  const Interval side(static_cast<double>(v.side));
+  for (int a = 0; a < 3; ++a) out[a] = ci[a] + z[a] + side * root * n[a];
+  for (const Interval& x : out) {
+    if (!x.finite()) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool exactly_coplanar(const std::array<const BoundaryVertex*, 4>& v, std::span<const Ball> balls) {
+  {  // A certified non-zero orientation in interval arithmetic decides without rationals.
+    std::array<I3, 4> p;
+    bool ok = true;
+    for (int i = 0; i < 4 && ok; ++i) ok = enclose(*v[i], balls, p[i]);
+    if (ok) {
+      I3 r[3];
+      for (int i = 0; i < 3; ++i) {
+        for (int a = 0; a < 3; ++a) r[i][a] = p[i][a] - p[3][a];
+      }
+      const Interval d = r[0][0] * (r[1][1] * r[2][2] - r[1][2] * r[2][1]) -
+                         r[0][1] * (r[1][0] * r[2][2] - r[1][2] * r[2][0]) +
+                         r[0][2] * (r[1][0] * r[2][1] - r[1][1] * r[2][0]);
+      if (d.excludes_zero()) return false;
+    }
+  }
   const Field<4> f(v, balls);
   std::array<std::array<Radical, 3>, 3> m;
   for (int i = 0; i < 3; ++i)
@@ -154,6 +239,34 @@ bool exactly_coplanar(const std::array<const BoundaryVertex*, 4>& v, std::span<c
 
 bool exactly_cospherical(const std::array<const BoundaryVertex*, 5>& v,
                          std::span<const Ball> balls) {
+  {  // A certified non-zero lifted determinant in interval arithmetic decides without
+     // rationals (24 terms of the 4 × 4 determinant relative to the fifth point).
+    std::array<I3, 5> p;
+    bool ok = true;
+    for (int i = 0; i < 5 && ok; ++i) ok = enclose(*v[i], balls, p[i]);
+    if (ok) {
+      Interval m[4][4];
+      for (int i = 0; i < 4; ++i) {
+        I3 d;
+        for (int a = 0; a < 3; ++a) d[a] = p[i][a] - p[4][a];
+        m[i][0] = d[0];
+        m[i][1] = d[1];
+        m[i][2] = d[2];
+        m[i][3] = idot(d, d);
+      }
+      Interval det(0.0);
+      std::array<int, 4> perm{0, 1, 2, 3};
+      do {
+        int inversions = 0;
+        for (int i = 0; i < 4; ++i) {
+          for (int j = i + 1; j < 4; ++j) inversions += perm[i] > perm[j] ? 1 : 0;
+        }
+        const Interval t = m[0][perm[0]] * m[1][perm[1]] * m[2][perm[2]] * m[3][perm[3]];
+        det = inversions % 2 == 0 ? det + t : det - t;
+      } while (std::next_permutation(perm.begin(), perm.end()));
+      if (det.excludes_zero()) return false;
+    }
+  }
   const Field<5> f(v, balls);
   auto mul = [&](const Radical& a, const Radical& b) { return f.mul(a, b); };
   std::array<std::array<Radical, 4>, 4> m;
@@ -203,16 +316,6 @@ bool maybe_cospherical(const std::array<Point3, 5>& p) {
     bound += std::fabs(t);
   } while (std::next_permutation(perm.begin(), perm.end()));
   return std::fabs(value) <= 1e-8 * bound;
-}
-
-bool maybe_coplanar(const std::array<Point3, 4>& p) {
-  const Vec3 a = p[1] - p[0], b = p[2] - p[0], c = p[3] - p[0];
-  const double value = dot(a, cross(b, c));
-  const Vec3 aa{std::fabs(a.x), std::fabs(a.y), std::fabs(a.z)};
-  const Vec3 ba{std::fabs(b.x), std::fabs(b.y), std::fabs(b.z)};
-  const Vec3 ca{std::fabs(c.x), std::fabs(c.y), std::fabs(c.z)};
-  const Vec3 bc{ba.y * ca.z + ba.z * ca.y, ba.z * ca.x + ba.x * ca.z, ba.x * ca.y + ba.y * ca.x};
-  return std::fabs(value) <= 1e-8 * dot(aa, bc);
 }
 
 }  // namespace rstruct::medial

@@ -22,20 +22,22 @@
 
 namespace rstruct::medial {
 
-/// True iff the exact points of the four vertices are coplanar. Exact.
+/// True iff the exact points of the four vertices are coplanar. Exact. Both tests first try
+/// an interval enclosure of the exact points (outward rounding by one ulp per operation):
+/// a determinant interval that excludes 0 decides "no" without rational arithmetic.
 bool exactly_coplanar(const std::array<const BoundaryVertex*, 4>& v, std::span<const Ball> balls);
 
 /// True iff the exact points of the five vertices lie on one sphere or plane (which holds
 /// for any fifth point when the first four are concyclic). Exact.
 bool exactly_cospherical(const std::array<const BoundaryVertex*, 5>& v, std::span<const Ball> balls);
 
-/// Floating-point prefilters on rounded points: false only if the lifted insphere (or the
-/// orientation) determinant exceeds 10⁻⁸ of its magnitude bound (the sum of the absolute
-/// values of its terms). The rounding of V is ≈ 10⁻¹⁶ relative, but its constructions can
-/// be ill-conditioned: at 10⁻¹⁴, exactly cospherical points of a four-radii grid were
-/// missed. Documented heuristics for speed (the exact tests cost milliseconds): a case
-/// they skip is decided as before the exact tests existed.
+/// A floating-point prefilter on rounded points: false only if the lifted insphere
+/// determinant exceeds 10⁻⁸ of its magnitude bound (the sum of the absolute values of its
+/// terms). The rounding of V is ≈ 10⁻¹⁶ relative, but its constructions can be
+/// ill-conditioned: at 10⁻¹⁴, exactly cospherical points of a four-radii grid were missed.
+/// A documented heuristic for speed: a case it skips is decided as before the exact tests
+/// existed. (No such prefilter guards exactly_coplanar: one at 10⁻⁸ missed flat cells and
+/// broke 7 of 70 four-radii grids.)
 bool maybe_cospherical(const std::array<Point3, 5>& p);
-bool maybe_coplanar(const std::array<Point3, 4>& p);
 
 }  // namespace rstruct::medial

@@ -744,10 +744,8 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
         const auto w = del.vertices(x);
         IdSet common = site[w[0]].tags;
         for (int q = 1; q < 4; ++q) common = intersect(common, site[w[q]].tags);
-        flat_cell[x] =
-            common.size >= 2 ||
-            (maybe_coplanar({del.point(w[0]), del.point(w[1]), del.point(w[2]), del.point(w[3])}) &&
-             exactly_coplanar({&bv[w[0]], &bv[w[1]], &bv[w[2]], &bv[w[3]]}, balls));
+        flat_cell[x] = common.size >= 2 ||
+                       exactly_coplanar({&bv[w[0]], &bv[w[1]], &bv[w[2]], &bv[w[3]]}, balls);
       }
       return flat_cell[x] == 1;
     };

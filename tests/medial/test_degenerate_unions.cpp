@@ -157,8 +157,9 @@ TEST_CASE("balls of four radii on a grid: exact cospherical and cocircular point
 
 TEST_CASE("larger four-radii grids", "[medial]") {
   // Of 40 unions of 125 balls and 30 of 300, 11 and 18 failed before the exact
-  // cospherical grouping, 1 and 1 after (both in the hidden test below). Four of them here.
-  for (int trial = 0; trial < 4; ++trial) {
+  // cospherical grouping, 1 and 1 after (both in the hidden test below). Six of them here;
+  // trials 5 and 13 failed while a floating-point prefilter guarded the exact flatness test.
+  for (int trial : {0, 1, 2, 3, 5, 13}) {
     INFO("trial " << trial);
     MedialAxisStats stats;
     const auto b = axis_betti(four_radii_grid(125, trial), stats);
