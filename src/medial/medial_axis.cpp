@@ -730,8 +730,10 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
     // Cells whose common facet has five cospherical points have the same Voronoi vertex:
     // one vertex per such group. Cospherical: the rounded points are (unperturbed
     // insphere), or the exact points are and share no ball's sphere (cells that share one
-    // already share its centre), neither cell being flat for the exact points (four
-    // concyclic points are cospherical with any fifth). See exact_cospherical.hpp.
+    // already share its centre). Either way neither cell may be flat for the exact points:
+    // four concyclic points are cospherical with any fifth, and a flat cell would chain
+    // unrelated groups together (an extra closed sheet in the axis). See
+    // exact_cospherical.hpp.
     std::vector<CellId> group(del.cell_capacity());
     for (CellId c = 0; c < group.size(); ++c) group[c] = c;
     auto find = [&](CellId c) {
@@ -770,8 +772,10 @@ MedialAxis medial_axis_of_union(std::span<const Ball> balls, MedialAxisStats* st
         if (nb < c || del.is_infinite(nb)) continue;
         const auto apex = del.vertex(nb, del.mirror_index(c, i));
         if (apex >= nv) continue;
-        if (predicates::insphere(del.point(vs[0]), del.point(vs[1]), del.point(vs[2]),
-                                 del.point(vs[3]), del.point(apex)) == Sign::zero ||
+        const bool rounded_cospherical =
+            predicates::insphere(del.point(vs[0]), del.point(vs[1]), del.point(vs[2]),
+                                 del.point(vs[3]), del.point(apex)) == Sign::zero;
+        if ((rounded_cospherical && !flat(c) && !flat(nb)) ||
             exact_cospherical(vs, c, nb, apex)) {
           const CellId a = find(c), b = find(nb);
           if (a != b) group[std::max(a, b)] = std::min(a, b);
