@@ -96,10 +96,8 @@ struct ConeFace {
   std::uint32_t p = 0;
   std::uint32_t q = 0;
   Sign inside = Sign::zero;
-  /// The boundary vertex at the other end of the arc of S_p ∩ S_q that leaves the site
-  /// across this face (kNone if none was found), and whether that arc is shorter than a
-  /// half circle (see link_arc_partners).
-  std::uint32_t partner = kNone;
+  /// Whether the arc of S_p ∩ S_q that leaves the site across this face reaches the next
+  /// boundary vertex within a half circle (see link_arc_partners).
   bool short_arc = false;
 };
 
@@ -263,7 +261,6 @@ void link_arc_partners(std::vector<Site>& sites, const std::vector<bool>& live,
           partner = m;
         }
       }
-      f.partner = partner;
       f.short_arc = partner != kNone && best < M_PI;
     }
   }

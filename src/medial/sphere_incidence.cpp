@@ -130,17 +130,15 @@ DistinctVertices distinct_vertices(std::span<const BoundaryVertex> bv, std::span
   // the sides tell them apart. Three spheres give two distinct points (or one double point,
   // whose two roundings are equal doubles, merged by the Delaunay triangulation).
   DistinctVertices out;
-  out.of_input.assign(bv.size(), 0);
   std::map<std::vector<std::uint32_t>, std::vector<std::uint32_t>> groups;  // by ball set
   for (std::uint32_t v = 0; v < bv.size(); ++v) {
     if (on[v].size() < 4) {
-      out.of_input[v] = static_cast<std::uint32_t>(out.vertex.size());
       out.vertex.push_back(bv[v]);
       out.on.push_back(on[v]);
       continue;
     }
     auto& members = groups[on[v]];  // representatives of this ball set so far
-    std::uint32_t match = 0xffffffffu;
+    bool same_point = false;
     for (const std::uint32_t r : members) {
       const BoundaryVertex& rep = out.vertex[r];
       bool coplanar = true;
@@ -152,17 +150,15 @@ DistinctVertices distinct_vertices(std::span<const BoundaryVertex> bv, std::span
         }
       }
       if (!coplanar || rep.side == bv[v].side * normal_agreement(rep, bv[v], balls)) {
-        match = r;
+        same_point = true;
         break;
       }
     }
-    if (match == 0xffffffffu) {
-      match = static_cast<std::uint32_t>(out.vertex.size());
+    if (!same_point) {
+      members.push_back(static_cast<std::uint32_t>(out.vertex.size()));
       out.vertex.push_back(bv[v]);
       out.on.push_back(on[v]);
-      members.push_back(match);
     }
-    out.of_input[v] = match;
   }
   return out;
 }

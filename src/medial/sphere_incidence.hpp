@@ -46,7 +46,6 @@ bool lies_on_sphere(const BoundaryVertex& v, std::span<const Ball> balls, const 
 struct DistinctVertices {
   std::vector<BoundaryVertex> vertex;          ///< one per exact point (its first rounding)
   std::vector<std::vector<std::uint32_t>> on;  ///< every ball whose sphere passes through it
-  std::vector<std::uint32_t> of_input;         ///< for each input vertex, its distinct point
 };
 
 /// Completes the sphere incidences of `bv` and merges the vertices that are one exact point.
