@@ -4,12 +4,15 @@
 // (0.5:0, 0.56:0.15 nested, 0.8:0.5 nested). --torus N: a torus (R/a = 3) with N
 // samples instead (the 10⁶-sample target: --torus 1000000 --levels 0.5:0).
 // Prints, per level, every stage's median wall and CPU seconds over --runs, the level's
-// total, and a checksum (kept balls, output vertices, triangles, Betti numbers, manifold).
+// total, and a checksum (kept balls, output vertices, triangles, Betti numbers, manifold);
+// per run, the cover (size, certified bound, gap) and a hash of the kept balls and the
+// output mesh, so that runs can be compared for identical results.
 //
 //   bench_seed [--runs 3] [--torus N] [--levels RHO:SHRINK,...] [--cover-time 0.3]
 //              [--threads 0] [--no-nested] [--random-order]
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -35,6 +38,25 @@ double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const std::size_t k = v.size() / 2;
   return v.size() % 2 == 1 ? v[k] : 0.5 * (v[k - 1] + v[k]);
+}
+
+/// FNV-1a over the kept balls, the output vertices and the triangles.
+std::uint64_t output_hash(const rstruct::pipeline::SeedPolytope& seed) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  const auto mix = [&h](std::uint64_t v) {
+    for (int b = 0; b < 8; ++b) {
+      h ^= (v >> (8 * b)) & 0xffU;
+      h *= 0x100000001b3ULL;
+    }
+  };
+  mix(seed.kept.size());
+  for (const std::uint32_t s : seed.kept) mix(s);
+  mix(seed.vertex_sample.size());
+  for (const std::uint32_t s : seed.vertex_sample) mix(s);
+  for (const auto& t : seed.triangles) {
+    for (const std::uint32_t v : t) mix(v);
+  }
+  return h;
 }
 
 struct Level {
@@ -199,6 +221,13 @@ int main(int argc, char** argv) {
                    static_cast<unsigned long long>(counters.exact));
       std::fprintf(stderr, "run %d level %zu: %.3f s cpu; %s\n", run + 1, l + 1,
                    level_times[l].total_cpu.back(), line);
+      if (seed.pruned) {
+        std::fprintf(stderr, "run %d level %zu: cover %.0f, certified bound %.2f, gap %.2f%%\n",
+                     run + 1, l + 1, seed.prune.cost, seed.prune.lower_bound,
+                     100 * seed.prune.gap);
+      }
+      std::fprintf(stderr, "run %d level %zu: output hash %016llx\n", run + 1, l + 1,
+                   static_cast<unsigned long long>(output_hash(seed)));
     }
   }
   poles.print("shared: Delaunay + poles + labels + D^");
