@@ -69,8 +69,13 @@ class Search {
 
   void dfs(double cost) {
     if (aborted_) return;
-    if (++result.nodes > max_nodes_ || ((result.nodes & 1023) == 0 && clock_.seconds() > deadline_)) {
+    if (++result.nodes > max_nodes_) {
       aborted_ = true;
+      return;
+    }
+    if ((result.nodes & 1023) == 0 && clock_.seconds() > deadline_) {
+      aborted_ = true;
+      result.timed_out = true;
       return;
     }
     std::int32_t row = -1;

@@ -17,6 +17,7 @@ struct BranchAndBoundResult {
   std::vector<std::int32_t> best;     ///< improved cover, empty if none beat the incumbent
   double best_cost = 0.0;
   std::int64_t nodes = 0;
+  bool timed_out = false;  ///< unfinished because of the deadline (not the node limit)
 };
 
 /// Searches for a cover cheaper than `incumbent_cost`, within `max_nodes` nodes and the

@@ -258,10 +258,17 @@ LocalSearchResult row_weighting_search(const Instance& inst, const std::vector<s
       s.remove(s.pick_removal(-1));
       continue;
     }
-    if (++it > options.max_iterations) break;
-    if ((it & 63) == 0 && (clock.seconds() > options.deadline ||
-                           (options.stop != nullptr && options.stop->load(std::memory_order_relaxed)))) {
+    if (it >= options.max_iterations) {
+      result.hit_iteration_limit = true;
       break;
+    }
+    ++it;
+    if ((it & 63) == 0) {
+      if (clock.seconds() > options.deadline) {
+        result.timed_out = true;
+        break;
+      }
+      if (options.stop != nullptr && options.stop->load(std::memory_order_relaxed)) break;
     }
     if (it - last_improvement > kRestartIterations && !result.best.empty()) {
       last_improvement = it;

@@ -33,8 +33,10 @@ struct LocalSearchOptions {
 struct LocalSearchResult {
   std::vector<std::int32_t> best;  ///< best cover found (may be `start` itself)
   double best_cost = 0.0;
-  std::int64_t iterations = 0;
+  std::int64_t iterations = 0;    ///< at most LocalSearchOptions::max_iterations
   double seconds_to_best = 0.0;  ///< clock reading when the best was found
+  bool timed_out = false;        ///< the deadline ended the search
+  bool hit_iteration_limit = false;
 };
 
 /// Improves the cover `start` (cost `start_cost`) of `inst`. Columns in `start` need not

@@ -154,7 +154,10 @@ class Presolver {
   }
 
   void split_components();
-  bool out_of_time() const { return clock_.seconds() > deadline_; }
+  bool out_of_time() {
+    if (clock_.seconds() > deadline_) out.timed_out = true;
+    return out.timed_out;
+  }
 
   Reduction out;
 

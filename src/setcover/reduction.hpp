@@ -27,6 +27,7 @@ struct Reduction {
   std::int64_t dominated_rows = 0;
   std::int64_t dominated_cols = 0;
   std::int64_t forced_cols = 0;
+  bool timed_out = false;  ///< domination checks were cut short by the deadline
 };
 
 /// Reduces `inst`. Domination checks stop (leaving a valid, less reduced instance) once

@@ -34,6 +34,8 @@ struct ComponentResult {
   double local_search_seconds = 0.0;
   bool proven = false;  ///< no cheaper cover exists (bound, reduced-cost fixing or search)
   std::int64_t exact_nodes = 0;
+  bool timed_out = false;       ///< the deadline ended or skipped some stage
+  bool hit_work_limit = false;  ///< an iteration or node limit ended some stage
 };
 
 /// Components whose surviving columns number at most this get an exact search first.
@@ -42,7 +44,7 @@ constexpr std::int64_t kExactNodes = 300'000;
 
 struct Budget {
   double deadline = 0.0;              ///< seconds on the solver clock
-  std::int64_t local_search_iterations = 0;  ///< 0: unlimited
+  std::int64_t local_search_iterations = -1;  ///< per stream; negative: unlimited
   std::int32_t subgradient_iterations = 0;
   std::uint64_t seed = 1;
   std::int32_t streams = 1;
@@ -92,6 +94,8 @@ void improve_by_local_search(const Instance& inst, detail::LagrangianState& st,
   if (sub.num_cols() <= kExactColumns) {
     const auto bb = detail::branch_and_bound(sub, st.cover_cost, kExactNodes, budget.deadline, clock);
     out.exact_nodes = bb.nodes;
+    out.timed_out = out.timed_out || bb.timed_out;
+    out.hit_work_limit = out.hit_work_limit || (!bb.finished && !bb.timed_out);
     if (!bb.best.empty() && bb.best_cost < st.cover_cost) {
       st.cover.clear();
       for (std::int32_t k : bb.best) st.cover.push_back(map[k]);
@@ -110,7 +114,7 @@ void improve_by_local_search(const Instance& inst, detail::LagrangianState& st,
     if (local_of[j] >= 0) seed_cols.push_back(local_of[j]);
   }
   const auto streams = static_cast<std::size_t>(std::max(1, budget.streams));
-  const bool limited = budget.local_search_iterations > 0;
+  const bool limited = budget.local_search_iterations >= 0;
   std::atomic<bool> stop{false};
   std::vector<detail::LocalSearchResult> results(streams);
   auto run_stream = [&](std::size_t s, double deadline) {
@@ -139,6 +143,8 @@ void improve_by_local_search(const Instance& inst, detail::LagrangianState& st,
   std::size_t winner = 0;
   for (std::size_t s = 0; s < streams; ++s) {
     out.local_search_iterations += results[s].iterations;
+    out.timed_out = out.timed_out || results[s].timed_out;
+    out.hit_work_limit = out.hit_work_limit || results[s].hit_iteration_limit;
     const auto& r = results[s];
     const auto& w = results[winner];
     if (!r.best.empty() && (w.best.empty() || r.best_cost < w.best_cost)) winner = s;
@@ -167,6 +173,8 @@ ComponentResult solve_component(const Instance& inst, const Budget& budget, cons
   // instances, where each subgradient iteration is as expensive as a sweep.
   if (clock.seconds() < budget.deadline) {
     detail::coordinate_ascent(inst, st, 5, t0 + 0.2 * std::max(0.0, budget.deadline - t0), clock);
+  } else {
+    out.timed_out = true;
   }
   const double now = clock.seconds();
   out.greedy_seconds = now - t0;
@@ -178,15 +186,21 @@ ComponentResult solve_component(const Instance& inst, const Budget& budget, cons
   if (clock.seconds() < so.deadline) {
     detail::subgradient(inst, st, so, clock);
     detail::coordinate_ascent(inst, st, 20, so.deadline, clock);
+  } else {
+    out.timed_out = true;
   }
   if (st.cover_cost < before) out.seconds_to_best = clock.seconds();
   out.subgradient_iterations = st.iterations;
+  out.timed_out = out.timed_out || st.timed_out;
+  out.hit_work_limit = out.hit_work_limit || st.hit_iteration_limit;
   const double t1 = clock.seconds();
   out.subgradient_seconds = t1 - now;
   if (detail::bound_closes_gap(inst, st.bound, st.cover_cost)) {
     out.proven = true;
   } else if (inst.num_cols() <= kExactColumns || clock.seconds() < budget.deadline) {
     improve_by_local_search(inst, st, budget, clock, out);
+  } else {
+    out.timed_out = true;
   }
   out.local_search_seconds = clock.seconds() - t1;
   out.cover = st.cover;
@@ -218,7 +232,31 @@ void attach_certificate(const Instance& inst, const std::vector<double>& u, Solu
   sol.optimal = sol.lower_bound >= sol.cost;
 }
 
+/// Local-search iterations of component k: the shares of `total` in proportion to the
+/// components' weights, as differences of rounded-down cumulative shares, so that they add
+/// up to `total` exactly (and never exceed it).
+std::int64_t local_search_share(std::int64_t total, std::int64_t weight_before,
+                                std::int64_t weight_through, std::int64_t weight_all) {
+  const auto upto = [&](std::int64_t w) {
+    return static_cast<std::int64_t>(std::floor(
+        static_cast<double>(total) * (static_cast<double>(w) / static_cast<double>(weight_all))));
+  };
+  return upto(weight_through) - upto(weight_before);
+}
+
 }  // namespace
+
+const char* to_string(SearchLimit limit) {
+  switch (limit) {
+    case SearchLimit::kNone:
+      return "none";
+    case SearchLimit::kIterations:
+      return "iterations";
+    case SearchLimit::kTime:
+      return "time";
+  }
+  return "?";
+}
 
 Solution solve(const Instance& inst, const SolverOptions& options) {
   Stopwatch clock;
@@ -239,12 +277,16 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
   std::vector<std::int32_t> cover = red.fixed_cols;
   double greedy_cost = inst.cost_of(red.fixed_cols);
   bool all_proven = true;
+  bool timed_out = red.timed_out;
+  bool hit_work_limit = false;
   std::int64_t remaining_nnz = 0;
   for (const Component& c : red.components) remaining_nnz += c.instance.num_entries() + 1;
+  const std::int64_t total_nnz = remaining_nnz;
   for (std::size_t k = 0; k < red.components.size(); ++k) {
     const Component& c = red.components[k];
     const std::int64_t weight = c.instance.num_entries() + 1;
     const double share = static_cast<double>(weight) / static_cast<double>(remaining_nnz);
+    const std::int64_t nnz_before = total_nnz - remaining_nnz;
     remaining_nnz -= weight;
     Budget budget;
     const double now = clock.seconds();
@@ -254,8 +296,9 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
     budget.threads = thread_count(options.threads, static_cast<std::size_t>(budget.streams));
     budget.subgradient_iterations = options.max_subgradient_iterations;
     if (options.max_local_search_iterations > 0) {
-      budget.local_search_iterations = std::max<std::int64_t>(
-          1, static_cast<std::int64_t>(share * static_cast<double>(options.max_local_search_iterations)));
+      budget.local_search_iterations =
+          local_search_share(options.max_local_search_iterations, nnz_before, nnz_before + weight,
+                             total_nnz);
     }
     const ComponentResult r = solve_component(c.instance, budget, clock);
     for (std::int32_t j : r.cover) cover.push_back(c.cols[j]);
@@ -269,7 +312,12 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
     sol.stats.local_search_seconds += r.local_search_seconds;
     sol.stats.exact_nodes += r.exact_nodes;
     all_proven = all_proven && r.proven;
+    timed_out = timed_out || r.timed_out;
+    hit_work_limit = hit_work_limit || r.hit_work_limit;
   }
+  sol.stats.stopped_by = timed_out        ? SearchLimit::kTime
+                         : hit_work_limit ? SearchLimit::kIterations
+                                          : SearchLimit::kNone;
   std::sort(cover.begin(), cover.end());
   RSTRUCT_ASSERT_MSG(inst.is_cover(cover), "set cover: solver produced a non-cover");
   sol.columns = cover;

@@ -132,7 +132,10 @@ void coordinate_ascent(const Instance& inst, LagrangianState& state, std::int32_
     return inst.row(a).size() < inst.row(b).size();
   });
   for (std::int32_t sweep = 0; sweep < sweeps; ++sweep) {
-    if (clock.seconds() > deadline) break;
+    if (clock.seconds() > deadline) {
+      state.timed_out = true;
+      break;
+    }
     for (std::int32_t i : order) {
       double m1 = std::numeric_limits<double>::infinity();
       for (std::int32_t j : inst.row(i)) m1 = std::min(m1, reduced[j] + u[i]);
@@ -186,10 +189,14 @@ void subgradient(const Instance& inst, LagrangianState& state, const Subgradient
   const std::int32_t heuristic_every = std::max(10, options.max_iterations / 25);
   double last_best = state.bound;
   std::int32_t stall = 0;
-  for (std::int32_t it = 1; it <= options.max_iterations; ++it) {
+  std::int32_t it = 1;
+  for (; it <= options.max_iterations; ++it) {
     ++state.iterations;
     if (bound_closes_gap(inst, state.bound, state.cover_cost)) break;
-    if ((it & 7) == 0 && clock.seconds() > options.deadline) break;
+    if ((it & 7) == 0 && clock.seconds() > options.deadline) {
+      state.timed_out = true;
+      break;
+    }
     const double value = core_value_and_subgradient(inst, core, u, s);
     if (!use_core && value > state.bound) {
       state.bound = value;
@@ -221,6 +228,7 @@ void subgradient(const Instance& inst, LagrangianState& state, const Subgradient
       if (stall >= 30 || lambda < 1e-6) break;
     }
   }
+  if (it > options.max_iterations) state.hit_iteration_limit = true;
   if (use_core) price();
 }
 

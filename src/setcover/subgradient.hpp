@@ -33,6 +33,8 @@ struct LagrangianState {
   double cover_cost = 0.0;
   std::int64_t iterations = 0;
   std::int64_t heuristic_calls = 0;
+  bool timed_out = false;            ///< a deadline ended coordinate ascent or the subgradient
+  bool hit_iteration_limit = false;  ///< the subgradient ran all its max_iterations
 };
 
 /// Initial multipliers u_i = min_{j ∋ i} c_j / |S_j|.

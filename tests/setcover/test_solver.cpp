@@ -149,4 +149,56 @@ TEST_CASE("local-search streams: deterministic under an iteration limit, never w
   // Same seed and work limits: the same cover, on two threads or one after another.
   CHECK(b.columns == c.columns);
   CHECK(b.columns == d.columns);
+  // Each stream ran its budget in full (or reached the bound); the report says so.
+  CHECK(b.stats.local_search_iterations <= 2 * two.max_local_search_iterations);
+  CHECK(b.stats.local_search_iterations == d.stats.local_search_iterations);
+  CHECK(b.stats.stopped_by == SearchLimit::kIterations);
+  CHECK(d.stats.stopped_by == SearchLimit::kIterations);
+}
+
+TEST_CASE("work limits: counts within the budget over several components, and the limit named") {
+  // Three random unicost blocks on disjoint rows (three components after reduction), each
+  // too large for the exact search, so that the local search runs in every component.
+  std::mt19937_64 rng(0xb0d6e7);
+  const std::int32_t sizes[] = {100, 200, 300};
+  std::int32_t rows = 0;
+  std::vector<std::vector<std::int32_t>> cols;
+  for (const std::int32_t n : sizes) {
+    std::vector<std::vector<std::int32_t>> block(static_cast<std::size_t>(5 * n));
+    for (auto& c : block) {
+      for (std::int32_t i = 0; i < n; ++i) {
+        if (rng() % 25 == 0) c.push_back(rows + i);
+      }
+    }
+    for (std::int32_t i = 0; i < n; ++i) block[static_cast<std::size_t>(i)].push_back(rows + i);
+    for (auto& c : block) {
+      std::sort(c.begin(), c.end());
+      c.erase(std::unique(c.begin(), c.end()), c.end());
+      cols.push_back(c);
+    }
+    rows += n;
+  }
+  const Instance inst = Instance::from_columns(rows, cols);
+  for (const std::int64_t budget : {std::int64_t{1}, std::int64_t{1000}, std::int64_t{9999}}) {
+    SolverOptions o = small_options(3);
+    o.max_local_search_iterations = budget;
+    o.max_subgradient_iterations = 50;
+    const Solution s = solve(inst, o);
+    INFO("budget " << budget << ": " << s.stats.components << " components, "
+                   << s.stats.local_search_iterations << " local-search and "
+                   << s.stats.subgradient_iterations << " subgradient iterations");
+    REQUIRE(inst.is_cover(s.columns));
+    CHECK(s.stats.components >= 3);
+    CHECK(s.stats.local_search_iterations <= budget * o.local_search_streams);
+    CHECK(s.stats.subgradient_iterations <= 50 * s.stats.components);
+    CHECK(s.stats.stopped_by != SearchLimit::kTime);
+    if (budget > 1) CHECK(s.stats.local_search_iterations > 0);
+  }
+  // No time at all: the time limit is named as what ended the search.
+  SolverOptions none = small_options(3);
+  none.time_limit = 0.0;
+  const Solution t = solve(inst, none);
+  CHECK(inst.is_cover(t.columns));
+  CHECK(t.stats.stopped_by == SearchLimit::kTime);
+  CHECK(std::string(to_string(SearchLimit::kIterations)) == "iterations");
 }

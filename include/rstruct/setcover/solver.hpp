@@ -17,13 +17,24 @@
 
 namespace rstruct::setcover {
 
+/// Every stage stops on work as well as on time: reduction after two domination passes,
+/// coordinate ascent after a fixed number of sweeps, the subgradient after
+/// `max_subgradient_iterations` (or when it stalls), the exact search on small components
+/// after 300,000 nodes, the local search after `max_local_search_iterations`. Only the local
+/// search has no work limit by default; with one, and a time limit generous enough never to
+/// be reached (SolverStats::stopped_by says whether it was), the result depends on the
+/// instance, `seed` and these limits only, not on the machine, its load or `threads`.
 struct SolverOptions {
-  /// Wall-clock budget in seconds (anytime: the best cover so far is returned).
+  /// Wall-clock budget in seconds (anytime: the best cover so far is returned). Shared
+  /// among the components in proportion to their entries; within a component the
+  /// coordinate ascent may use 20 % of it, the subgradient 30 % of the rest.
   double time_limit = 10.0;
   /// Seed of every random choice. With a fixed seed the result is deterministic as long as
   /// the work limits below, not the time limit, end the search.
   std::uint64_t seed = 1;
-  /// Local-search iterations over all components (0: no limit besides time).
+  /// Local-search iterations per stream over all components (0: no limit besides time),
+  /// shared among the components in proportion to their entries (the shares add up to
+  /// exactly this number; a tiny component may get none).
   std::int64_t max_local_search_iterations = 0;
   /// Subgradient iterations per component.
   std::int32_t max_subgradient_iterations = 10000;
@@ -41,6 +52,16 @@ struct SolverOptions {
   unsigned threads = 0;
 };
 
+/// Which kind of limit ended a search (SolverStats::stopped_by).
+enum class SearchLimit : std::uint8_t {
+  kNone,        ///< every stage ended on its own: gap closed, exact search done, stalled
+  kIterations,  ///< no stage was cut by time; an iteration or node limit ended one or more
+  kTime,        ///< the time limit cut some stage short: the result depends on the machine
+};
+
+/// "none", "iterations" or "time".
+const char* to_string(SearchLimit limit);
+
 /// Counters for reports.
 struct SolverStats {
   double seconds = 0.0;
@@ -50,9 +71,12 @@ struct SolverStats {
   std::int64_t dominated_rows = 0;
   std::int64_t dominated_columns = 0;
   std::int64_t components = 0;
-  std::int64_t subgradient_iterations = 0;
+  std::int64_t subgradient_iterations = 0;   ///< over all components
+  /// Over all components and streams: at most local_search_streams ×
+  /// max_local_search_iterations when that is positive.
   std::int64_t local_search_iterations = 0;
   std::int64_t exact_nodes = 0;  ///< branch-and-bound nodes over all components
+  SearchLimit stopped_by = SearchLimit::kNone;
   double reduction_seconds = 0.0;
   double greedy_seconds = 0.0;
   double subgradient_seconds = 0.0;
