@@ -8,8 +8,12 @@
 // per run, the cover (size, certified bound, gap) and a hash of the kept balls and the
 // output mesh, so that runs can be compared for identical results.
 //
-//   bench_seed [--runs 3] [--torus N] [--levels RHO:SHRINK,...] [--cover-time 0.3]
-//              [--threads 0] [--no-nested] [--random-order]
+// The set cover stops on its work budget (--cover-iterations, default the pipeline's),
+// so every run gives the same output; --cover-iterations 0 --cover-time 0.3 restores the
+// former wall-clock budget.
+//
+//   bench_seed [--runs 3] [--torus N] [--levels RHO:SHRINK,...] [--cover-iterations N]
+//              [--cover-time 60] [--threads 0] [--no-nested] [--random-order]
 
 #include <algorithm>
 #include <cstdint>
@@ -119,7 +123,9 @@ int main(int argc, char** argv) {
   int runs = 3;
   std::size_t torus = 0;
   std::string levels_text = "0.5:0,0.56:0.15,0.8:0.5";
-  double cover_time = 0.3;
+  double cover_time = rstruct::pipeline::kDefaultCoverTimeCap;
+  long long cover_iterations = rstruct::pipeline::kDefaultCoverIterations;
+  int cover_subgradient = rstruct::pipeline::kDefaultCoverSubgradientIterations;
   unsigned threads = 0;
   bool nested = true;
   bool random_order = false;
@@ -140,6 +146,22 @@ int main(int argc, char** argv) {
       levels_text = next();
     } else if (a == "--cover-time") {
       cover_time = std::atof(next());
+      if (!(cover_time >= 0 && cover_time <= 1e6)) {
+        std::fprintf(stderr, "--cover-time must be in [0, 1e6] seconds\n");
+        return 2;
+      }
+    } else if (a == "--cover-iterations") {
+      cover_iterations = std::atoll(next());
+      if (cover_iterations < 0 || cover_iterations > 1'000'000'000'000LL) {
+        std::fprintf(stderr, "--cover-iterations must be in [0, 1e12] (0: time limit only)\n");
+        return 2;
+      }
+    } else if (a == "--cover-subgradient") {
+      cover_subgradient = std::atoi(next());
+      if (cover_subgradient < 1 || cover_subgradient > 1'000'000) {
+        std::fprintf(stderr, "--cover-subgradient must be in [1, 1e6]\n");
+        return 2;
+      }
     } else if (a == "--threads") {
       threads = static_cast<unsigned>(std::atoi(next()));
     } else if (a == "--no-nested") {
@@ -149,7 +171,14 @@ int main(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: bench_seed [--runs 3] [--torus N] [--levels RHO:SHRINK,...] "
-                   "[--cover-time 0.3] [--threads 0] [--no-nested] [--random-order]\n");
+                   "[--cover-iterations %lld] [--cover-time %g] [--threads 0] [--no-nested] "
+                   "[--random-order]\n"
+                   "  --cover-iterations: set-cover local-search iterations per stream "
+                   "(deterministic; 0: stop on --cover-time only)\n"
+                   "  --cover-time: set-cover wall-clock limit in seconds (a safety cap "
+                   "unless --cover-iterations is 0)\n",
+                   static_cast<long long>(rstruct::pipeline::kDefaultCoverIterations),
+                   rstruct::pipeline::kDefaultCoverTimeCap);
       return a == "--help" ? 0 : 2;
     }
   }
@@ -170,9 +199,11 @@ int main(int argc, char** argv) {
       samples.push_back(generated[i]);
     }
   }
-  std::printf("input: %s, %zu samples (%s order); levels %s; %d runs; cover time %.2f s\n",
-              request.shape.c_str(), samples.size(), random_order ? "sampler" : "Hilbert",
-              levels_text.c_str(), runs, cover_time);
+  std::printf(
+      "input: %s, %zu samples (%s order); levels %s; %d runs; cover budget %lld iterations "
+      "(0: none), time limit %.2f s\n",
+      request.shape.c_str(), samples.size(), random_order ? "sampler" : "Hilbert",
+      levels_text.c_str(), runs, cover_iterations, cover_time);
 
   StageTimes poles;
   std::vector<StageTimes> level_times(levels.size());
@@ -191,6 +222,8 @@ int main(int argc, char** argv) {
       options.rho = levels[l].rho;
       options.rho_tilde = levels[l].shrink;
       options.prune.time_limit = cover_time;
+      options.prune.iterations = cover_iterations;
+      options.prune.subgradient_iterations = cover_subgradient;
       options.threads = threads;
       if (nested && options.rho_tilde > 0 && options.rho_tilde >= previous_shrink) {
         options.candidates = previous_kept;
@@ -222,9 +255,22 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "run %d level %zu: %.3f s cpu; %s\n", run + 1, l + 1,
                    level_times[l].total_cpu.back(), line);
       if (seed.pruned) {
-        std::fprintf(stderr, "run %d level %zu: cover %.0f, certified bound %.2f, gap %.2f%%\n",
+        const auto& st = seed.prune.solver;
+        std::fprintf(stderr,
+                     "run %d level %zu: cover %.0f, certified bound %.2f, gap %.2f%%; "
+                     "%lld components, subgradient %lld, local search %lld iterations, "
+                     "%lld exact nodes; stopped by %s\n",
                      run + 1, l + 1, seed.prune.cost, seed.prune.lower_bound,
-                     100 * seed.prune.gap);
+                     100 * seed.prune.gap, static_cast<long long>(st.components),
+                     static_cast<long long>(st.subgradient_iterations),
+                     static_cast<long long>(st.local_search_iterations),
+                     static_cast<long long>(st.exact_nodes),
+                     rstruct::setcover::to_string(st.stopped_by));
+        std::fprintf(stderr,
+                     "run %d level %zu: set cover %.3f s: reduction %.3f, greedy %.3f, "
+                     "subgradient %.3f, local search %.3f, certificate %.3f\n",
+                     run + 1, l + 1, st.seconds, st.reduction_seconds, st.greedy_seconds,
+                     st.subgradient_seconds, st.local_search_seconds, st.certificate_seconds);
       }
       std::fprintf(stderr, "run %d level %zu: output hash %016llx\n", run + 1, l + 1,
                    static_cast<unsigned long long>(output_hash(seed)));

@@ -56,7 +56,14 @@ class DemoCommand : public Command {
     app.add_option("--levels", levels_,
                    "Levels of detail as RHO:SHRINK,... (shrink 0: no pruning)")
         ->capture_default_str();
-    app.add_option("--cover-time", cover_time_, "Seconds for each set cover")
+    app.add_option("--cover-iterations", cover_iterations_,
+                   "Work budget of each set cover: local-search iterations per search "
+                   "stream; the outputs are then the same on any machine and thread count "
+                   "(0: no work limit, --cover-time alone ends the search)")
+        ->capture_default_str();
+    app.add_option("--cover-time", cover_time_,
+                   "Wall-clock limit of each set cover in seconds: a safety cap on the work "
+                   "budget, or the budget itself with --cover-iterations 0")
         ->capture_default_str();
     app.add_option("--seed", seed_, "Seed of the sample")->capture_default_str();
     app.add_flag("--nested,!--no-nested", nested_,
@@ -69,6 +76,9 @@ class DemoCommand : public Command {
   int run(Context& context) override {
     const std::vector<Level> levels = parse_levels(levels_);
     if (n_ < 100 || n_ > 50000000) throw InvalidInput("--n must be in [100, 5e7]");
+    require_range(cover_time_, 0.0, 1e6, "--cover-time");
+    require_range(static_cast<double>(cover_iterations_), 0.0, kMaxCoverIterations,
+                  "--cover-iterations");
     std::filesystem::create_directories(out_dir_);
 
     sampling::SampleRequest request;
@@ -112,6 +122,7 @@ class DemoCommand : public Command {
       options.rho = levels[i].rho;
       options.rho_tilde = levels[i].shrink;
       options.prune.time_limit = cover_time_;
+      options.prune.iterations = cover_iterations_;
       options.threads = threads_;
       if (nested_ && options.rho_tilde > 0 && options.rho_tilde >= previous_shrink) {
         options.candidates = previous_kept;  // empty after an unpruned level: every sample
@@ -150,7 +161,8 @@ class DemoCommand : public Command {
   // ρ and ρ̃ above the guaranteed ranges; the pipeline warns about it, and the demo checks
   // the Betti numbers of every output instead.
   std::string levels_ = "0.5:0,0.56:0.15,0.8:0.5";
-  double cover_time_ = 0.3;
+  double cover_time_ = pipeline::kDefaultCoverTimeCap;
+  std::int64_t cover_iterations_ = pipeline::kDefaultCoverIterations;
   std::uint64_t seed_ = 1;
   bool nested_ = true;
   unsigned threads_ = 0;

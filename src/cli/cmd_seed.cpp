@@ -34,8 +34,15 @@ class SeedCommand : public Command {
         ->capture_default_str();
     app.add_option("--map", outputs_.map, "Write the output vertex id of every sample");
     app.add_option("--balls", outputs_.balls, "Write the kept balls (PLY with radius)");
+    app.add_option("--cover-iterations", options_.prune.iterations,
+                   "Set-cover work budget: local-search iterations per search stream; the "
+                   "cover is then the same on any machine and thread count (0: no work "
+                   "limit, --cover-time alone ends the search)")
+        ->capture_default_str();
     app.add_option("--cover-time", options_.prune.time_limit,
-                   "Seconds for the set-cover solver")
+                   "Set-cover wall-clock limit in seconds: a safety cap on the work budget, "
+                   "or the budget itself with --cover-iterations 0 (the cover then depends "
+                   "on the machine)")
         ->capture_default_str();
     app.add_option("--seed", options_.prune.seed, "Seed of the set-cover solver")
         ->capture_default_str();
@@ -50,6 +57,8 @@ class SeedCommand : public Command {
     require_range(options_.rho, 1e-6, 1.0, "--rho");
     require_range(options_.rho_tilde, 0.0, 1.0, "--shrink");
     require_range(options_.prune.time_limit, 0.0, 1e6, "--cover-time");
+    require_range(static_cast<double>(options_.prune.iterations), 0.0, kMaxCoverIterations,
+                  "--cover-iterations");
     TriangleMesh input;
     {
       Report::Stage stage(context.report, "read");

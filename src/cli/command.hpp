@@ -58,6 +58,9 @@ std::array<double, 3> parse_triple(const std::string& text, const std::string& o
 /// Requires a finite number within [lo, hi]. \throws InvalidInput naming the option.
 double require_range(double value, double lo, double hi, const std::string& option);
 
+/// Upper end of --cover-iterations (a day's work and more on any machine).
+inline constexpr double kMaxCoverIterations = 1e12;
+
 }  // namespace rstruct::cli
 
 #define RSTRUCT_CONCAT_INNER(a, b) a##b

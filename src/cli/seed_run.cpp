@@ -105,6 +105,7 @@ pipeline::SeedPolytope run_seed(const std::vector<Point3>& samples,
   auto& d = report.data();
   d["parameters"] = {{"rho", options.rho}, {"rho_tilde", options.rho_tilde},
                      {"cover_time_limit", options.prune.time_limit},
+                     {"cover_iterations", options.prune.iterations},
                      {"candidates", options.candidates.empty() ? samples.size()
                                                                : options.candidates.size()},
                      {"shared_poles", shared != nullptr}};
@@ -112,9 +113,26 @@ pipeline::SeedPolytope run_seed(const std::vector<Point3>& samples,
   d["kept_balls"] = seed.kept.size();
   d["hidden_balls"] = seed.hidden_balls;
   if (seed.pruned) {
+    const setcover::SolverOptions& budget = seed.prune.solver_options;
+    const setcover::SolverStats& st = seed.prune.solver;
     d["cover"] = {{"size", seed.prune.cost}, {"certified_lower_bound", seed.prune.lower_bound},
                   {"gap", seed.prune.gap}, {"optimal", seed.prune.optimal},
-                  {"matrix_entries", seed.prune.entries}};
+                  {"matrix_entries", seed.prune.entries},
+                  // The limits the solver ran with (0 local-search iterations: no limit)
+                  // and which kind ended it: "time" means the cover depends on the machine.
+                  {"budget", {{"local_search_iterations_per_stream",
+                               budget.max_local_search_iterations},
+                              {"local_search_streams", budget.local_search_streams},
+                              {"subgradient_iterations_per_component",
+                               budget.max_subgradient_iterations},
+                              {"time_limit", budget.time_limit},
+                              {"seed", budget.seed}}},
+                  {"stopped_by", setcover::to_string(st.stopped_by)},
+                  {"components", st.components},
+                  {"subgradient_iterations", st.subgradient_iterations},
+                  {"local_search_iterations", st.local_search_iterations},
+                  {"exact_nodes", st.exact_nodes},
+                  {"solver_seconds", st.seconds}};
   }
   d["dual_complex"] = {{"simplices", seed.k_counts},
                        {"facets_exterior_singular_regular_interior", seed.facet_classes},
@@ -128,6 +146,14 @@ pipeline::SeedPolytope run_seed(const std::vector<Point3>& samples,
                  {"first_manifold_problem", seed.manifold.first_problem},
                  {"remapped_samples", seed.remapped_samples}};
   d["guarantee_holds"] = seed.warnings.empty();
+  if (seed.pruned && options.prune.iterations > 0 &&
+      seed.prune.solver.stopped_by == setcover::SearchLimit::kTime) {
+    char limit[32];
+    std::snprintf(limit, sizeof limit, "%g", options.prune.time_limit);
+    context.warn(std::string("set cover: the time limit (") + limit +
+                 " s) ended the search before the work budget, so the cover may differ "
+                 "between runs and machines (raise --cover-time)");
+  }
 
   if (!context.quiet) {
     const std::initializer_list<const char*> pole_stages = {"delaunay", "poles", "labels",
@@ -147,6 +173,20 @@ pipeline::SeedPolytope run_seed(const std::vector<Point3>& samples,
       std::snprintf(line, sizeof line, "   cover %.0f balls, certified bound %.2f, gap %.2f%%",
                     seed.prune.cost, seed.prune.lower_bound, 100 * seed.prune.gap);
       print_row("pruning (set cover)", pr, line);
+      const setcover::SolverStats& st = seed.prune.solver;
+      const setcover::SolverOptions& budget = seed.prune.solver_options;
+      std::string budget_text = "no iteration limit";
+      if (budget.max_local_search_iterations > 0) {
+        budget_text = "budget " + std::to_string(budget.max_local_search_iterations) +
+                      " x " + std::to_string(budget.local_search_streams) + " streams";
+      }
+      std::snprintf(line, sizeof line,
+                    "    %lld local-search (%s), %lld subgradient iterations; %.3g s limit; "
+                    "stopped by %s\n",
+                    static_cast<long long>(st.local_search_iterations), budget_text.c_str(),
+                    static_cast<long long>(st.subgradient_iterations), budget.time_limit,
+                    setcover::to_string(st.stopped_by));
+      std::cerr << line;
     } else {
       std::snprintf(line, sizeof line, "  %-28s %8s     (rho~ = 0: every ball kept)\n",
                     "pruning (set cover)", "-");

@@ -34,7 +34,12 @@ PruneResult prune_balls(std::span<const Ball> shrunk, std::span<const Point3> po
   Report::Stage cover_stage(rep, "set cover");
   setcover::SolverOptions solver_options;
   solver_options.time_limit = options.time_limit;
+  if (options.iterations > 0) {
+    solver_options.max_local_search_iterations = options.iterations;
+    solver_options.max_subgradient_iterations = options.subgradient_iterations;
+  }
   solver_options.seed = options.seed;
+  solver_options.threads = options.threads;
   const setcover::Solution solution = setcover::solve(instance, solver_options);
   cover_stage.finish();
 
@@ -43,6 +48,8 @@ PruneResult prune_balls(std::span<const Ball> shrunk, std::span<const Point3> po
   result.lower_bound = solution.lower_bound;
   result.gap = solution.gap;
   result.optimal = solution.optimal;
+  result.solver_options = solver_options;
+  result.solver = solution.stats;
   result.seconds = total.seconds();
   return result;
 }
