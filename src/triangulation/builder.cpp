@@ -17,7 +17,6 @@ namespace pr = rstruct::predicates;
 
 namespace {
 
-constexpr std::uint32_t kUnlinked = 0xFFFFFFFFu;
 /// Neighbour links hold cell << 2 | mirror index in 32 bits.
 constexpr std::size_t kMaxCells = std::size_t{1} << 30;
 
@@ -28,6 +27,8 @@ constexpr int kOther[4][4][2] = {
     {{1, 3}, {0, 3}, {-1, -1}, {0, 1}},
     {{1, 2}, {0, 2}, {0, 1}, {-1, -1}},
 };
+/// kOthers[i]: the three indices of {0, 1, 2, 3} other than i, increasing.
+constexpr int kOthers[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
 /// kDirected[i][j] = (a, b): facet j of a positively oriented cell, counter-clockwise seen
 /// from outside the cell and rotated to start at vertex i, is (i, a, b). The cell across
 /// that facet sees it clockwise, as (i, b, a): directed edges pair up reversed.
@@ -77,7 +78,7 @@ void Builder::run() {
     t_.order_.resize(n);
     std::iota(t_.order_.begin(), t_.order_.end(), 0u);
   }
-  if (weights_ == nullptr && n > 0) {
+  if (n > 0) {
     Point3 lo = t_.points_[0], hi = t_.points_[0];
     for (const Point3& q : t_.points_) {
       for (std::size_t i = 0; i < 3; ++i) {
@@ -86,6 +87,10 @@ void Builder::run() {
       }
     }
     box_filter_.emplace(lo, hi);
+    if (weights_ != nullptr) {
+      const auto [wlo, whi] = std::minmax_element(t_.weights_.begin(), t_.weights_.end());
+      box_filter_->set_weight_range(*wlo, *whi);
+    }
   }
   const bool swap_first = choose_first_tetrahedron();
   // Points stored in insertion order make the construction's memory accesses local
@@ -275,14 +280,8 @@ void Builder::make_first_cells(const VertexId (&v)[4]) {
   last_ = 0;
 }
 
-CellId Builder::new_cell() {
+CellId Builder::append_cell() {
   auto& cells = t_.cells_;
-  if (t_.free_head_ != kNoCell) {
-    const CellId c = t_.free_head_;
-    t_.free_head_ = cells[c].n[0];
-    --t_.free_count_;
-    return c;
-  }
   if (cells.size() >= kMaxCells) {
     throw InvalidInput("triangulation: more than 2^30 cells needed; the input is too large");
   }
@@ -291,16 +290,23 @@ CellId Builder::new_cell() {
   return static_cast<CellId>(cells.size() - 1);
 }
 
-bool Builder::in_conflict(CellId c, VertexId p) {
+bool Builder::in_conflict_general(CellId c, VertexId p) {
   const Cell& k = t_.cells_[c];
   const int inf = t_.infinite_index(c);
-  ++t_.stats_.power_test_calls;
   if (inf < 0) {
     if (weights_ == nullptr) {
+      // A Delaunay vertex is removed only by a point with its exact coordinates; the
+      // filter never decides such a test (the point's row of differences is zero, so the
+      // computed value is exactly zero), so this is where duplicates show up.
+      for (const VertexId v : k.v) {
+        if (points_[v] == points_[p]) duplicate_of_ = v;
+      }
       if (box_filter_) {
-        const int f = box_filter_->insphere_filter(points_[k.v[0]], points_[k.v[1]],
-                                                   points_[k.v[2]], points_[k.v[3]], points_[p]);
-        if (f != pr::detail::kUndecided) [[likely]] return f > 0;
+        // in_conflict() tried the filter.
+        return pr::detail::insphere_sos_after_filter(
+                   points_[k.v[0]], points_[k.v[1]], points_[k.v[2]], points_[k.v[3]],
+                   points_[p], input_id(k.v[0]), input_id(k.v[1]), input_id(k.v[2]),
+                   input_id(k.v[3]), input_id(p)) == Sign::positive;
       }
       return pr::insphere_sos(points_[k.v[0]], points_[k.v[1]], points_[k.v[2]],
                               points_[k.v[3]], points_[p], input_id(k.v[0]),
@@ -312,7 +318,7 @@ bool Builder::in_conflict(CellId c, VertexId p) {
                               input_id(k.v[0]), input_id(k.v[1]), input_id(k.v[2]),
                               input_id(k.v[3]), input_id(p)) == Sign::positive;
   }
-  const int o = t_.orient_replaced(c, inf, points_[p]);
+  const int o = t_.orient_replaced(c, inf, points_[p], box_filter_ ? &*box_filter_ : nullptr);
   if (o != 0) return o > 0;
   // p lies in the plane of the hull facet: decide in that plane (2D power test).
   VertexId f[3];
@@ -329,28 +335,53 @@ bool Builder::in_conflict(CellId c, VertexId p) {
 }
 
 void Builder::insert(VertexId p) {
-  const Point3& q = points_[p];
-  const CellId c = t_.walk(q, t_.is_cell(last_) ? last_ : t_.any_cell(), rng_,
-                           t_.stats_.walk_steps, t_.stats_.orient_calls);
-  if (!in_conflict(c, p)) {
+  duplicate_of_ = kInfiniteVertex;
+  bool conflict = false;
+  const CellId c = locate_conflict(p, conflict);
+  if (!conflict) {
     raw_hidden_.push_back({p, c});
     last_ = c;
     return;
   }
-  // Delaunay: a vertex is hidden only by a point with its exact coordinates.
-  VertexId duplicate_of = kInfiniteVertex;
-  if (weights_ == nullptr) {
-    for (const VertexId v : t_.cells_[c].v) {
-      if (v != kInfiniteVertex && points_[v] == q) duplicate_of = v;
-    }
-  }
   find_conflict_region(c, p);
   build_star(p);
-  collect_hidden_vertices(p, duplicate_of);
+  collect_hidden_vertices(p, duplicate_of_);
   release_conflict_region();
 }
 
+// Bowyer-Watson needs some cell in conflict with p, not necessarily the one containing
+// it. The walk starts in a cell incident to the previous point, close in the BRIO order;
+// the conflict region of p covers a neighbourhood of p, so that cell is often in conflict
+// already (on uniform points, for about half the insertions), and then the walk is
+// skipped. Otherwise the walk ends at the cell containing p, which conflicts with p unless
+// p is hidden: then `conflict` is false. (Testing for conflicts at every step of the walk
+// as well was slower on points of a surface: a conflict cell met early can be a long thin
+// cell far from p, and the next walk, started from the new cells next to it, gets long.)
+CellId Builder::locate_conflict(VertexId p, bool& conflict) {
+  auto& stats = t_.stats_;
+  const CellId start = t_.is_cell(last_) ? last_ : t_.any_cell();
+  ++stats.power_test_calls;
+  if (in_conflict(start, p)) {
+    conflict = true;
+    return start;
+  }
+  const CellId c = t_.walk(points_[p], start, rng_, stats.walk_steps, stats.orient_calls,
+                           box_filter_ ? &*box_filter_ : nullptr);
+  ++stats.power_test_calls;
+  conflict = c == start ? false : in_conflict(c, p);
+  return c;
+}
+
 void Builder::find_conflict_region(CellId start, VertexId p) {
+  if (weights_ == nullptr) {
+    find_conflict_region_impl<false>(start, p);
+  } else {
+    find_conflict_region_impl<true>(start, p);
+  }
+}
+
+template <bool kWeighted>
+void Builder::find_conflict_region_impl(CellId start, VertexId p) {
   conflict_.clear();
   outside_.clear();
   boundary_.clear();
@@ -369,7 +400,7 @@ void Builder::find_conflict_region(CellId start, VertexId p) {
       const unsigned m = mark(y);
       if (m == kConflict) continue;
       if (m == kNone) {
-        if (in_conflict(y, p)) {
+        if (in_conflict<kWeighted>(y, p)) {
           set_mark(y, kConflict);
           stack_.push_back(y);
           continue;
@@ -381,43 +412,54 @@ void Builder::find_conflict_region(CellId start, VertexId p) {
     }
   }
   t_.stats_.conflict_cells += conflict_.size();
+  // Every cell tested but the start (tested by insert()) is in conflict_ or outside_.
+  t_.stats_.power_test_calls += conflict_.size() - 1 + outside_.size();
 }
 
 // One new cell per boundary facet (the facet joined to p), linked to the cell outside the
-// cavity; link_star() links the new cells among themselves. The boundary vertices get
-// their local numbers here, once per new cell, while the cell is in cache.
+// cavity; the new cells are linked among themselves through the edge table (link_star).
+//
+// The new cells' facets through p pair up along the edges of the cavity boundary, a
+// triangulated sphere in which every edge lies in exactly two facets with opposite
+// directions. With the boundary's vertices numbered 1..kLocal-1 (the infinite vertex 0),
+// facet j of new cell n is written at slot [a][b] of the edge table while the cell is
+// built, and finds its partner at [b][a] afterwards: no search, no branch. Larger
+// cavities (degenerate input) use a hash table.
 void Builder::build_star(VertexId p) {
   auto& cells = t_.cells_;
-  star_.clear();
-  star_local_.clear();
+  const std::size_t m = boundary_.size();
+  star_.resize(m);
+  star_partner_slot_.resize(m);
   local_vertices_.clear();
-  for (const BoundaryFacet& b : boundary_) {
+  for (std::size_t s = 0; s < m; ++s) {
+    const BoundaryFacet& b = boundary_[s];
     const CellId n = new_cell();
     Cell& k = cells[n];
     const Cell& x = cells[b.cell];
-    const std::uint32_t out = x.n[b.index];
+    const int i = b.index;
+    const std::uint32_t out = x.n[i];
     std::array<std::uint8_t, 4> local{};
     for (int j = 0; j < 4; ++j) {
       k.v[j] = x.v[j];
-      k.n[j] = kUnlinked;
-      if (j != b.index) local[static_cast<std::size_t>(j)] = local_number(x.v[j]);
+      local[static_cast<std::size_t>(j)] = j == i ? 0 : local_number(x.v[j]);
     }
-    k.v[b.index] = p;
-    k.n[b.index] = out;
-    const std::uint32_t self = n << 2 | static_cast<std::uint32_t>(b.index);
-    cells[out >> 2].n[out & 3u] = self;
-    star_.push_back(n);
-    star_local_.push_back(local);
+    k.v[i] = p;
+    k.n[i] = out;
+    cells[out >> 2].n[out & 3u] = n << 2 | static_cast<std::uint32_t>(i);
+    std::array<std::uint16_t, 4>& partner = star_partner_slot_[s];
+    for (int t = 0; t < 3; ++t) {
+      const int j = kOthers[i][t];
+      const std::size_t a = local[static_cast<std::size_t>(kDirected[i][j][0])];
+      const std::size_t c = local[static_cast<std::size_t>(kDirected[i][j][1])];
+      edge_faces_[a * kLocal + c] = n << 2 | static_cast<std::uint32_t>(j);
+      partner[static_cast<std::size_t>(j)] = static_cast<std::uint16_t>(c * kLocal + a);
+    }
+    star_[s] = n;
   }
   link_star();
   last_ = star_.front();
 }
 
-// The new cells' facets through p pair up along the edges of the cavity boundary, a
-// triangulated sphere in which every edge lies in exactly two facets with opposite
-// directions. With the boundary's vertices numbered 0..31 (the infinite vertex 0), facet j
-// of new cell n is written at [a][b] and finds its partner at [b][a]: no search, no
-// branch. Larger cavities (degenerate input) use a hash table.
 void Builder::link_star() {
   for (const VertexId v : local_vertices_) vertex_local_[v] = 0;
   // With every number in use, a vertex may have gone unnumbered (0, like the infinite one).
@@ -429,25 +471,12 @@ void Builder::link_star() {
   auto& cells = t_.cells_;
   const std::size_t m = star_.size();
   for (std::size_t s = 0; s < m; ++s) {
-    const std::uint32_t n = star_[s];
+    const CellId n = star_[s];
     const int i = boundary_[s].index;  // p's index in n
-    const std::array<std::uint8_t, 4>& local = star_local_[s];
-    for (int j = 0; j < 4; ++j) {
-      if (j == i) continue;
-      const std::size_t a = local[static_cast<std::size_t>(kDirected[i][j][0])];
-      const std::size_t b = local[static_cast<std::size_t>(kDirected[i][j][1])];
-      edge_faces_[a * kLocal + b] = n << 2 | static_cast<std::uint32_t>(j);
-    }
-  }
-  for (std::size_t s = 0; s < m; ++s) {
-    const std::uint32_t n = star_[s];
-    const int i = boundary_[s].index;
-    const std::array<std::uint8_t, 4>& local = star_local_[s];
-    for (int j = 0; j < 4; ++j) {
-      if (j == i) continue;
-      const std::size_t a = local[static_cast<std::size_t>(kDirected[i][j][0])];
-      const std::size_t b = local[static_cast<std::size_t>(kDirected[i][j][1])];
-      cells[n].n[j] = edge_faces_[b * kLocal + a];
+    const std::array<std::uint16_t, 4>& partner = star_partner_slot_[s];
+    for (int t = 0; t < 3; ++t) {
+      const int j = kOthers[i][t];
+      cells[n].n[j] = edge_faces_[partner[static_cast<std::size_t>(j)]];
     }
   }
 }

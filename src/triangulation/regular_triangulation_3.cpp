@@ -8,6 +8,7 @@
 #include "builder.hpp"
 #include "rstruct/core/assert.hpp"
 #include "rstruct/core/error.hpp"
+#include "rstruct/predicates/almost_static_filter.hpp"
 #include "rstruct/predicates/predicates.hpp"
 
 namespace rstruct::triangulation {
@@ -103,10 +104,12 @@ std::array<VertexId, 3> RegularTriangulation3::facet_vertices(const Facet& f) co
   return {k.v[o[0]], k.v[o[1]], k.v[o[2]]};
 }
 
-int RegularTriangulation3::orient_replaced(CellId c, int i, const Point3& q) const {
+int RegularTriangulation3::orient_replaced(CellId c, int i, const Point3& q,
+                                           const pr::AlmostStaticFilter* filter) const {
   const Cell& k = cells_[c];
   const Point3* p[4];
   for (int j = 0; j < 4; ++j) p[j] = j == i ? &q : &points_[k.v[j]];
+  if (filter != nullptr) return to_int(filter->orient3d_two_stage(*p[0], *p[1], *p[2], *p[3]));
   return to_int(pr::orient3d(*p[0], *p[1], *p[2], *p[3]));
 }
 
@@ -118,7 +121,8 @@ CellId RegularTriangulation3::any_cell() const {
 }
 
 CellId RegularTriangulation3::walk(const Point3& q, CellId start, std::uint64_t& rng,
-                                   std::uint64_t& steps, std::uint64_t& orients) const {
+                                   std::uint64_t& steps, std::uint64_t& orients,
+                                   const pr::AlmostStaticFilter* filter) const {
   CellId c = start;
   CellId previous = kNoCell;
   // The stochastic walk terminates with probability 1 (Devillers, Pion & Teillaud); the
@@ -131,7 +135,7 @@ CellId RegularTriangulation3::walk(const Point3& q, CellId start, std::uint64_t&
       const CellId inner = neighbor(c, inf);
       if (previous == inner) return c;
       ++orients;
-      if (orient_replaced(c, inf, q) > 0) return c;
+      if (orient_replaced(c, inf, q, filter) > 0) return c;
       previous = c;
       c = inner;
       continue;
@@ -143,7 +147,7 @@ CellId RegularTriangulation3::walk(const Point3& q, CellId start, std::uint64_t&
       const CellId next = neighbor(c, i);
       if (next == previous) continue;
       ++orients;
-      if (orient_replaced(c, i, q) < 0) {
+      if (orient_replaced(c, i, q, filter) < 0) {
         previous = c;
         c = next;
         moved = true;

@@ -113,3 +113,75 @@ TEST_CASE("AlmostStaticFilter rejects empty or non-finite boxes and, checked, ou
   const pr::AlmostStaticFilter huge({-1e308, -1e308, -1e308}, {1e308, 1e308, 1e308});
   CHECK(huge.orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}) == Sign::positive);
 }
+
+TEST_CASE("AlmostStaticFilter two-stage filters: oracle signs, and small cells in a big box") {
+  // Clusters of width 2^-k inside a box of width 2^10: the box bound cannot decide most of
+  // their tests (their determinants are far below it); the second stage, the semi-static
+  // bound on the same value, must decide them, and every decided sign must be the
+  // oracle's. Weighted points use a weight range; some clusters are degenerate (grids).
+  const std::uint64_t seed = 0x5eed0204;
+  INFO("seed " << seed);
+  std::mt19937_64 rng(seed);
+  pr::AlmostStaticFilter filter({-512, -512, -512}, {512, 512, 512});
+  const double wmax = 1.0;
+  filter.set_weight_range(0.0, wmax);
+  CHECK(filter.power_test_bound() < HUGE_VAL);
+  std::uniform_real_distribution<double> centre(-500, 500), unit(0, 1);
+  long box_undecided = 0, second_decided = 0, orient_second = 0;
+  for (int n = 0; n < 20000; ++n) {
+    const int k = 2 + n % 12;
+    const double w = std::ldexp(1.0, -k);
+    const Point3 o{centre(rng), centre(rng), centre(rng)};
+    std::array<Point3, 5> p;
+    for (auto& q : p) {
+      q = n % 4 == 0 ? o + grid_point(rng, 0, w, 2) : o + Point3{w * unit(rng), w * unit(rng), w * unit(rng)};
+    }
+    const int o3 = oracle::orient3d(p[0], p[1], p[2], p[3]);
+    REQUIRE(to_int(filter.orient3d_two_stage(p[0], p[1], p[2], p[3])) == o3);
+    const double bx = p[1].x - p[0].x, by = p[1].y - p[0].y, bz = p[1].z - p[0].z;
+    const double cx = p[2].x - p[0].x, cy = p[2].y - p[0].y, cz = p[2].z - p[0].z;
+    const double dx = p[3].x - p[0].x, dy = p[3].y - p[0].y, dz = p[3].z - p[0].z;
+    if (o3 != 0 && std::fabs(pr::detail::det3(bx, by, bz, cx, cy, cz, dx, dy, dz)) <=
+                       filter.orient3d_bound()) {
+      ++orient_second;
+    }
+    if (o3 == 0) continue;
+    const int f = filter.insphere_filter_two_stage(p[0], p[1], p[2], p[3], p[4]);
+    const int box = filter.insphere_filter(p[0], p[1], p[2], p[3], p[4]);
+    const int exact = oracle::insphere(p[0], p[1], p[2], p[3], p[4]);
+    if (box != pr::detail::kUndecided) REQUIRE(box == exact);
+    if (f != pr::detail::kUndecided) REQUIRE(f == exact);
+    if (box == pr::detail::kUndecided) {
+      ++box_undecided;
+      second_decided += f != pr::detail::kUndecided;
+    }
+    // Weighted: weights in [0, wmax], some equal (then the weight column is zero).
+    std::array<double, 5> wt;
+    for (auto& x : wt) x = n % 3 == 0 ? 0.25 : wmax * unit(rng) * w * w;
+    const int g = filter.power_test_filter_two_stage(p[0], p[1], p[2], p[3], p[4], wt[0], wt[1],
+                                                     wt[2], wt[3], wt[4]);
+    if (g != pr::detail::kUndecided) {
+      REQUIRE(g == oracle::power_test({p[0], wt[0]}, {p[1], wt[1]}, {p[2], wt[2]},
+                                      {p[3], wt[3]}, {p[4], wt[4]}));
+    }
+  }
+  // The second stages are exercised, and decide most of what the box bound cannot.
+  CHECK(box_undecided > 1000);
+  CHECK(second_decided > box_undecided / 2);
+  CHECK(orient_second > 100);
+}
+
+TEST_CASE("AlmostStaticFilter weight range: rejected when empty or not finite") {
+  pr::AlmostStaticFilter filter({0, 0, 0}, {1, 1, 1});
+  CHECK(filter.power_test_bound() == HUGE_VAL);
+  CHECK_THROWS_AS(filter.set_weight_range(1, 0), InvalidInput);
+  CHECK_THROWS_AS(filter.set_weight_range(0, HUGE_VAL), InvalidInput);
+  CHECK_THROWS_AS(filter.set_weight_range(std::nan(""), 0), InvalidInput);
+  filter.set_weight_range(-1, 1);
+  CHECK(filter.power_test_bound() < HUGE_VAL);
+  if (check_level() >= 2) {
+    CHECK_THROWS_AS(filter.power_test_filter_two_stage({0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+                                                       {0, 0, 1}, {0.2, 0.2, 0.2}, 0, 0, 0, 2, 0),
+                    InvalidInput);
+  }
+}

@@ -54,6 +54,25 @@ class AlmostStaticFilter {
     }
   }
 
+  /// Also bounds the weights: power_test_filter_two_stage then has a static bound for
+  /// weighted points with wlo ≤ w ≤ whi (its weight column is bounded by fl(whi − wlo),
+  /// as the coordinates by the box's extents).
+  /// \throws InvalidInput if a bound is not finite or wlo > whi.
+  void set_weight_range(double wlo, double whi) {
+    if (!std::isfinite(wlo) || !std::isfinite(whi) || wlo > whi) {
+      throw InvalidInput("AlmostStaticFilter: the weight range [wlo, whi] is empty or not finite");
+    }
+    wlo_ = wlo;
+    whi_ = whi;
+    const double wx = hi_.x - lo_.x, wy = hi_.y - lo_.y, wz = hi_.z - lo_.z;
+    const double smallest = detail::min3(wx, wy, wz);
+    const double big = detail::max2(detail::max2(wx, wy), wz);
+    const double ww = whi - wlo;
+    power_test_bound_ = smallest >= detail::filter::kGuardDegree5.min_magnitude
+                            ? detail::filter::kPowerTest * wx * wy * wz * detail::max2(big * big, ww)
+                            : HUGE_VAL;
+  }
+
   /// predicates::orient3d(a, b, c, d). \pre a, b, c, d lie in the box (checked, throwing
   /// InvalidInput, when built with -Dchecks=expensive or above).
   Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) const {
@@ -66,6 +85,34 @@ class AlmostStaticFilter {
       return static_cast<Sign>(f);
     }
     return predicates::orient3d(a, b, c, d);
+  }
+
+  /// orient3d, with the semi-static bound of detail::orient3d_filter applied to the same
+  /// computed value where the box bound cannot decide (flat cells of a dense sample in a
+  /// large box), before the exact stage: one evaluation instead of two. Same results.
+  Sign orient3d_two_stage(const Point3& a, const Point3& b, const Point3& c,
+                          const Point3& d) const {
+    if constexpr (check_level() >= 2) require_in_box({&a, &b, &c, &d});
+    const double bx = b.x - a.x, by = b.y - a.y, bz = b.z - a.z;
+    const double cx = c.x - a.x, cy = c.y - a.y, cz = c.z - a.z;
+    const double dx = d.x - a.x, dy = d.y - a.y, dz = d.z - a.z;
+    const double value = detail::det3(bx, by, bz, cx, cy, cz, dx, dy, dz);
+    const int f = detail::decide(value, orient3d_bound_, std::fabs(value) <= kMaxFinite);
+    if (f != detail::kUndecided) [[likely]] {
+      RSTRUCT_PREDICATE_COUNT(orient3d, filter);
+      return static_cast<Sign>(f);
+    }
+    // As detail::orient3d_filter.
+    const double mx = detail::abs_max3(bx, cx, dx), my = detail::abs_max3(by, cy, dy),
+                 mz = detail::abs_max3(bz, cz, dz);
+    const int g = detail::decide(
+        value, detail::filter::kOrient3d * mx * my * mz,
+        detail::in_guard(detail::min3(mx, my, mz), value, detail::filter::kGuardDegree3));
+    if (g != detail::kUndecided) {
+      RSTRUCT_PREDICATE_COUNT(orient3d, filter);
+      return static_cast<Sign>(g);
+    }
+    return detail::orient3d_after_filter(a, b, c, d);
   }
 
   /// predicates::insphere(a, b, c, d, e). \pre as for orient3d.
@@ -95,9 +142,90 @@ class AlmostStaticFilter {
     return f;
   }
 
+  /// insphere_filter, and where the box bound cannot decide, the semi-static bound of
+  /// detail::insphere_filter applied to the same computed value: the two filters evaluate
+  /// the same floating-point expression, so either bound certifies its sign. Small cells
+  /// in a large box (dense samples, points on a surface, whose determinants fall below
+  /// the box bound) are then decided without a second evaluation. Same results as
+  /// insphere_filter where that decides; kUndecided only where both bounds fail.
+  /// \pre as for orient3d.
+  int insphere_filter_two_stage(const Point3& a, const Point3& b, const Point3& c,
+                                const Point3& d, const Point3& e) const {
+    if constexpr (check_level() >= 2) require_in_box({&a, &b, &c, &d, &e});
+    const Point3 ta = a - e, tb = b - e, tc = c - e, td = d - e;
+    using detail::lifted_height;
+    const detail::LiftedRows<double> rows{
+        ta.x, ta.y, ta.z, lifted_height(ta.x, ta.y, ta.z, 0.0),
+        tb.x, tb.y, tb.z, lifted_height(tb.x, tb.y, tb.z, 0.0),
+        tc.x, tc.y, tc.z, lifted_height(tc.x, tc.y, tc.z, 0.0),
+        td.x, td.y, td.z, lifted_height(td.x, td.y, td.z, 0.0)};
+    const double value = detail::lifted_det4_negated(rows);
+    const int f = detail::decide(value, insphere_bound_, std::fabs(value) <= kMaxFinite);
+    if (f != detail::kUndecided) [[likely]] {
+      RSTRUCT_PREDICATE_COUNT(insphere, filter);
+      return f;
+    }
+    // As detail::lifted4_filter_points<false>.
+    const double mx = detail::abs_max4(ta.x, tb.x, tc.x, td.x);
+    const double my = detail::abs_max4(ta.y, tb.y, tc.y, td.y);
+    const double mz = detail::abs_max4(ta.z, tb.z, tc.z, td.z);
+    const double big = detail::max2(detail::max2(mx, my), mz);
+    const int g = detail::decide(
+        value, detail::filter::kInsphere * mx * my * mz * (big * big),
+        detail::in_guard(detail::min3(mx, my, mz), value, detail::filter::kGuardDegree5));
+    if (g != detail::kUndecided) RSTRUCT_PREDICATE_COUNT(insphere, filter);
+    return g;
+  }
+
+  /// The power test's filter (detail::lifted4_filter_points<true>) in two stages as
+  /// insphere_filter_two_stage: the static bound of set_weight_range (+inf before it is
+  /// called), then the semi-static bound on the same computed value. −1 or +1, the sign
+  /// of predicates::power_test, or kUndecided. \pre as for orient3d, and the weights lie
+  /// in the range given to set_weight_range (if it was called).
+  int power_test_filter_two_stage(const Point3& a, const Point3& b, const Point3& c,
+                                  const Point3& d, const Point3& e, double aw, double bw,
+                                  double cw, double dw, double ew) const {
+    if constexpr (check_level() >= 2) {
+      require_in_box({&a, &b, &c, &d, &e});
+      if (power_test_bound_ != HUGE_VAL) {
+        for (const double w : {aw, bw, cw, dw, ew}) {
+          if (!(w >= wlo_ && w <= whi_)) {
+            throw InvalidInput("AlmostStaticFilter: weight outside the filter's range");
+          }
+        }
+      }
+    }
+    // As detail::lifted4_filter_points<true>.
+    const Point3 ta = a - e, tb = b - e, tc = c - e, td = d - e;
+    const double wa = aw - ew, wb = bw - ew, wc = cw - ew, wd = dw - ew;
+    using detail::lifted_height;
+    const detail::LiftedRows<double> rows{
+        ta.x, ta.y, ta.z, lifted_height(ta.x, ta.y, ta.z, wa),
+        tb.x, tb.y, tb.z, lifted_height(tb.x, tb.y, tb.z, wb),
+        tc.x, tc.y, tc.z, lifted_height(tc.x, tc.y, tc.z, wc),
+        td.x, td.y, td.z, lifted_height(td.x, td.y, td.z, wd)};
+    const double value = detail::lifted_det4_negated(rows);
+    const int f = detail::decide(value, power_test_bound_, std::fabs(value) <= kMaxFinite);
+    if (f != detail::kUndecided) [[likely]] {
+      RSTRUCT_PREDICATE_COUNT(power_test, filter);
+      return f;
+    }
+    const double mx = detail::abs_max4(ta.x, tb.x, tc.x, td.x);
+    const double my = detail::abs_max4(ta.y, tb.y, tc.y, td.y);
+    const double mz = detail::abs_max4(ta.z, tb.z, tc.z, td.z);
+    const double big = detail::max2(detail::max2(mx, my), mz);
+    const double mw = detail::abs_max4(wa, wb, wc, wd);
+    const int g = detail::decide(
+        value, detail::filter::kPowerTest * mx * my * mz * detail::max2(big * big, mw),
+        detail::in_guard(detail::min3(mx, my, mz), value, detail::filter::kGuardDegree5));
+    if (g != detail::kUndecided) RSTRUCT_PREDICATE_COUNT(power_test, filter);
+    return g;
+  }
+
   /// The precomputed bounds (+inf: that filter never decides), for tests and reports.
   double orient3d_bound() const { return orient3d_bound_; }
   double insphere_bound() const { return insphere_bound_; }
+  double power_test_bound() const { return power_test_bound_; }
 
  private:
   static constexpr double kMaxFinite = 0x1.fffffffffffffp1023;
@@ -116,6 +244,8 @@ class AlmostStaticFilter {
   Point3 lo_, hi_;
   double orient3d_bound_ = HUGE_VAL;
   double insphere_bound_ = HUGE_VAL;
+  double power_test_bound_ = HUGE_VAL;
+  double wlo_ = 0, whi_ = 0;
 };
 
 }  // namespace rstruct::predicates

@@ -45,6 +45,10 @@
 #include "rstruct/core/huge_page_allocator.hpp"
 #include "rstruct/geometry/vec3.hpp"
 
+namespace rstruct::predicates {
+class AlmostStaticFilter;
+}
+
 namespace rstruct::triangulation {
 
 /// A vertex: the index of its input point.
@@ -120,7 +124,7 @@ struct TriangulationStats {
   std::uint64_t conflict_cells = 0;      ///< cells destroyed by insertions (total)
   std::uint64_t orient_calls = 0;        ///< orient3d calls of the walk
   std::uint64_t power_test_calls = 0;    ///< insphere / power tests of the conflict search
-  std::uint64_t large_cavities = 0;      ///< cavities with more than 31 boundary vertices
+  std::uint64_t large_cavities = 0;      ///< cavities with more than 127 boundary vertices (hashed linking)
 };
 
 /// The result of is_valid(): ok, or the first violated property in words.
@@ -316,11 +320,14 @@ class RegularTriangulation3 {
     return -1;
   }
   /// Sign of orient3d of cell c with its vertex i replaced by q (the other three finite).
-  int orient_replaced(CellId c, int i, const Point3& q) const;
+  /// With `filter` (a box holding q and every point), its orient3d_two_stage is used.
+  int orient_replaced(CellId c, int i, const Point3& q,
+                      const predicates::AlmostStaticFilter* filter = nullptr) const;
   /// Remembering stochastic walk from `start` (a live cell) to a cell whose closure contains
   /// q; an infinite cell iff q is strictly outside the hull. `rng` is the caller's state.
   CellId walk(const Point3& q, CellId start, std::uint64_t& rng, std::uint64_t& steps,
-              std::uint64_t& orients) const;
+              std::uint64_t& orients,
+              const predicates::AlmostStaticFilter* filter = nullptr) const;
   /// Some live cell, for walks without a usable hint.
   CellId any_cell() const;
   /// Rebuilds vertex_cell_, the counts and the hidden/duplicate reports from the cells and
