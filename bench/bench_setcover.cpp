@@ -238,12 +238,15 @@ void run_geometric(const Args& args) {
                   100.0 * sol.gap, sol.stats.seconds, sol.stats.seconds_to_best,
                   static_cast<long long>(sol.stats.forced_columns), v.valid ? "VALID" : "INVALID");
       std::printf("    stages: reduce %.2f greedy %.2f subgradient %.2f (%lld it) local search %.2f "
-                  "(%lld it) certificate %.2f; %lld components, %lld dominated rows, %lld dominated cols\n",
+                  "(%lld it) certificate %.2f; %lld components, %lld dominated rows, %lld dominated cols, "
+                  "domination work %.1f per entry\n",
                   sol.stats.reduction_seconds, sol.stats.greedy_seconds, sol.stats.subgradient_seconds,
                   static_cast<long long>(sol.stats.subgradient_iterations), sol.stats.local_search_seconds,
                   static_cast<long long>(sol.stats.local_search_iterations), sol.stats.certificate_seconds,
                   static_cast<long long>(sol.stats.components), static_cast<long long>(sol.stats.dominated_rows),
-                  static_cast<long long>(sol.stats.dominated_columns));
+                  static_cast<long long>(sol.stats.dominated_columns),
+                  static_cast<double>(sol.stats.reduction_work) /
+                      static_cast<double>(std::max<std::int64_t>(inst.num_entries(), 1)));
       std::fflush(stdout);
     }
   }

@@ -132,6 +132,7 @@ pipeline::SeedPolytope run_seed(const std::vector<Point3>& samples,
                   {"subgradient_iterations", st.subgradient_iterations},
                   {"local_search_iterations", st.local_search_iterations},
                   {"exact_nodes", st.exact_nodes},
+                  {"domination_work", st.reduction_work},
                   {"solver_seconds", st.seconds}};
   }
   d["dual_complex"] = {{"simplices", seed.k_counts},

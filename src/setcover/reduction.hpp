@@ -28,10 +28,14 @@ struct Reduction {
   std::int64_t dominated_cols = 0;
   std::int64_t forced_cols = 0;
   bool timed_out = false;  ///< domination checks were cut short by the deadline
+  bool work_limited = false;  ///< domination checks were cut short by the work limit
+  std::int64_t work = 0;      ///< entries scanned by the domination checks
 };
 
 /// Reduces `inst`. Domination checks stop (leaving a valid, less reduced instance) once
-/// `clock` passes `deadline`. \pre every row is covered by some column.
-Reduction reduce(const Instance& inst, bool use_domination, double deadline, const Stopwatch& clock);
+/// `clock` passes `deadline` or they have scanned more than `work_limit` entries (0: no
+/// work limit). \pre every row is covered by some column.
+Reduction reduce(const Instance& inst, bool use_domination, double deadline, const Stopwatch& clock,
+                 std::int64_t work_limit = 0);
 
 }  // namespace rstruct::setcover::detail

@@ -265,8 +265,17 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
                             " (0-based) is covered by no column; no cover exists");
   }
   Solution sol;
-  const detail::Reduction red =
-      detail::reduce(inst, options.use_domination, 0.5 * options.time_limit, clock);
+  double work_limit = options.domination_work_per_entry > 0
+                          ? options.domination_work_per_entry *
+                                static_cast<double>(std::max<std::int64_t>(inst.num_entries(), 1))
+                          : 9.0e18;
+  if (options.max_domination_work > 0) {
+    work_limit = std::min(work_limit, static_cast<double>(options.max_domination_work));
+  }
+  const detail::Reduction red = detail::reduce(
+      inst, options.use_domination, 0.5 * options.time_limit, clock,
+      work_limit < 9.0e18 ? std::max<std::int64_t>(static_cast<std::int64_t>(work_limit), 1) : 0);
+  sol.stats.reduction_work = red.work;
   sol.stats.forced_columns = red.forced_cols;
   sol.stats.dominated_rows = red.dominated_rows;
   sol.stats.dominated_columns = red.dominated_cols;
@@ -278,7 +287,7 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
   double greedy_cost = inst.cost_of(red.fixed_cols);
   bool all_proven = true;
   bool timed_out = red.timed_out;
-  bool hit_work_limit = false;
+  bool hit_work_limit = red.work_limited;
   std::int64_t remaining_nnz = 0;
   for (const Component& c : red.components) remaining_nnz += c.instance.num_entries() + 1;
   const std::int64_t total_nnz = remaining_nnz;

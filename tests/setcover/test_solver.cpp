@@ -202,3 +202,64 @@ TEST_CASE("work limits: counts within the budget over several components, and th
   CHECK(t.stats.stopped_by == SearchLimit::kTime);
   CHECK(std::string(to_string(SearchLimit::kIterations)) == "iterations");
 }
+
+TEST_CASE("domination work limit: deterministic cut, valid cover, the limit named") {
+  // Columns and many of their subsets (dominated columns) over random rows: the domination
+  // passes have real work to do. A small limit must cut them (fewer dominated columns found,
+  // less work), leave a valid cover and certificate, and be reported as a work limit; the
+  // default limit must not cut them here (their unlimited work is far below 64 per entry).
+  std::mt19937_64 rng(0xd0111a7e);
+  const std::int32_t rows = 400;
+  std::vector<std::vector<std::int32_t>> cols;
+  for (int j = 0; j < 300; ++j) {
+    std::vector<std::int32_t> c;
+    for (std::int32_t i = 0; i < rows; ++i) {
+      if (rng() % 20 == 0) c.push_back(i);
+    }
+    if (c.empty()) c.push_back(static_cast<std::int32_t>(rng() % rows));
+    cols.push_back(c);
+    std::vector<std::int32_t> sub;
+    for (const std::int32_t i : c) {
+      if (rng() % 2 == 0) sub.push_back(i);
+    }
+    if (!sub.empty()) cols.push_back(sub);
+  }
+  for (std::int32_t i = 0; i < rows; ++i) cols.push_back({i});
+  const Instance inst = Instance::from_columns(rows, cols);
+  SolverOptions full = small_options();
+  full.max_local_search_iterations = 2000;
+  full.domination_work_per_entry = 0;  // no work limit
+  full.max_domination_work = 0;
+  SolverOptions cut = full;
+  cut.domination_work_per_entry = 0.5;
+  SolverOptions standard = full;
+  standard.domination_work_per_entry = 64;
+  standard.max_domination_work = 1'000'000'000;
+  SolverOptions capped = full;  // the absolute cap alone, set low
+  capped.max_domination_work = 100;
+  const Solution a = solve(inst, full);
+  const Solution b = solve(inst, cut);
+  const Solution b2 = solve(inst, cut);
+  const Solution c = solve(inst, standard);
+  INFO("work per entry: unlimited " << a.stats.reduction_work / double(inst.num_entries())
+                                    << ", cut " << b.stats.reduction_work / double(inst.num_entries()));
+  REQUIRE(inst.is_cover(a.columns));
+  REQUIRE(inst.is_cover(b.columns));
+  CHECK(a.stats.dominated_columns > 0);
+  CHECK(b.stats.dominated_columns < a.stats.dominated_columns);
+  CHECK(b.stats.reduction_work < a.stats.reduction_work);
+  CHECK(b.stats.stopped_by == SearchLimit::kIterations);
+  CHECK(b.columns == b2.columns);
+  CHECK(b.stats.reduction_work == b2.stats.reduction_work);
+  CHECK(b.lower_bound <= a.cost);
+  CHECK(a.lower_bound <= b.cost);
+  // The default limit leaves this instance's reduction as without one.
+  CHECK(a.stats.reduction_work < 64 * inst.num_entries());
+  CHECK(c.stats.reduction_work == a.stats.reduction_work);
+  CHECK(c.stats.dominated_columns == a.stats.dominated_columns);
+  CHECK(c.columns == a.columns);
+  const Solution d = solve(inst, capped);
+  REQUIRE(inst.is_cover(d.columns));
+  CHECK(d.stats.reduction_work < a.stats.reduction_work);
+  CHECK(d.stats.stopped_by == SearchLimit::kIterations);
+}

@@ -17,7 +17,9 @@
 
 namespace rstruct::setcover {
 
-/// Every stage stops on work as well as on time: reduction after two domination passes,
+/// Every stage stops on work as well as on time: reduction after two domination passes or
+/// a number of entries scanned (`domination_work_per_entry` times the instance's entries,
+/// at most `max_domination_work`), whichever is first,
 /// coordinate ascent after a fixed number of sweeps, the subgradient after
 /// `max_subgradient_iterations` (or when it stalls), the exact search on small components
 /// after 300,000 nodes, the local search after `max_local_search_iterations`. Only the local
@@ -40,6 +42,19 @@ struct SolverOptions {
   std::int32_t max_subgradient_iterations = 10000;
   /// Presolve with row and column domination (forced columns are always taken).
   bool use_domination = true;
+  /// Work limit of the domination passes: entries scanned, per entry of the instance
+  /// (0: none besides time). Domination costs up to the sum over entries of the pivot's
+  /// line length, quadratic in the density: on 10^6 samples of a torus with large shrunk
+  /// balls (level 2 of bench_seed --torus) the passes ran past the time cap, 93 s, and
+  /// their result depended on the machine's speed. Measured without a limit: the double
+  /// torus levels of bench_seed take 15 and 21 per entry, OR-Library's instances (weighted
+  /// and unicost) at most 29.7, so 64 leaves all of them unchanged.
+  double domination_work_per_entry = 64;
+  /// And at most this many entries scanned in all (0: no such cap). At 64 per entry the
+  /// torus instance above (1.4 × 10^8 entries) still took 81 s, about 1.1 × 10^8 entries
+  /// scanned per second; 10^9 bounds the passes at about 9 s on this machine and is 7 times
+  /// the largest double-torus level's need.
+  std::int64_t max_domination_work = 1'000'000'000;
   /// Independent local-search streams per component (seeds derived from `seed` and the
   /// stream index; the best cover wins, ties to the lower index). A fixed number, so that
   /// iteration-limited runs give the same result on any machine; each stream gets the
@@ -78,6 +93,7 @@ struct SolverStats {
   std::int64_t exact_nodes = 0;  ///< branch-and-bound nodes over all components
   SearchLimit stopped_by = SearchLimit::kNone;
   double reduction_seconds = 0.0;
+  std::int64_t reduction_work = 0;  ///< entries scanned by the domination passes
   double greedy_seconds = 0.0;
   double subgradient_seconds = 0.0;
   double local_search_seconds = 0.0;
