@@ -152,29 +152,7 @@ class AlmostStaticFilter {
   int insphere_filter_two_stage(const Point3& a, const Point3& b, const Point3& c,
                                 const Point3& d, const Point3& e) const {
     if constexpr (check_level() >= 2) require_in_box({&a, &b, &c, &d, &e});
-    const Point3 ta = a - e, tb = b - e, tc = c - e, td = d - e;
-    using detail::lifted_height;
-    const detail::LiftedRows<double> rows{
-        ta.x, ta.y, ta.z, lifted_height(ta.x, ta.y, ta.z, 0.0),
-        tb.x, tb.y, tb.z, lifted_height(tb.x, tb.y, tb.z, 0.0),
-        tc.x, tc.y, tc.z, lifted_height(tc.x, tc.y, tc.z, 0.0),
-        td.x, td.y, td.z, lifted_height(td.x, td.y, td.z, 0.0)};
-    const double value = detail::lifted_det4_negated(rows);
-    const int f = detail::decide(value, insphere_bound_, std::fabs(value) <= kMaxFinite);
-    if (f != detail::kUndecided) [[likely]] {
-      RSTRUCT_PREDICATE_COUNT(insphere, filter);
-      return f;
-    }
-    // As detail::lifted4_filter_points<false>.
-    const double mx = detail::abs_max4(ta.x, tb.x, tc.x, td.x);
-    const double my = detail::abs_max4(ta.y, tb.y, tc.y, td.y);
-    const double mz = detail::abs_max4(ta.z, tb.z, tc.z, td.z);
-    const double big = detail::max2(detail::max2(mx, my), mz);
-    const int g = detail::decide(
-        value, detail::filter::kInsphere * mx * my * mz * (big * big),
-        detail::in_guard(detail::min3(mx, my, mz), value, detail::filter::kGuardDegree5));
-    if (g != detail::kUndecided) RSTRUCT_PREDICATE_COUNT(insphere, filter);
-    return g;
+    return lifted_two_stage<false>(a, b, c, d, e, 0, 0, 0, 0, 0);
   }
 
   /// The power test's filter (detail::lifted4_filter_points<true>) in two stages as
@@ -195,31 +173,7 @@ class AlmostStaticFilter {
         }
       }
     }
-    // As detail::lifted4_filter_points<true>.
-    const Point3 ta = a - e, tb = b - e, tc = c - e, td = d - e;
-    const double wa = aw - ew, wb = bw - ew, wc = cw - ew, wd = dw - ew;
-    using detail::lifted_height;
-    const detail::LiftedRows<double> rows{
-        ta.x, ta.y, ta.z, lifted_height(ta.x, ta.y, ta.z, wa),
-        tb.x, tb.y, tb.z, lifted_height(tb.x, tb.y, tb.z, wb),
-        tc.x, tc.y, tc.z, lifted_height(tc.x, tc.y, tc.z, wc),
-        td.x, td.y, td.z, lifted_height(td.x, td.y, td.z, wd)};
-    const double value = detail::lifted_det4_negated(rows);
-    const int f = detail::decide(value, power_test_bound_, std::fabs(value) <= kMaxFinite);
-    if (f != detail::kUndecided) [[likely]] {
-      RSTRUCT_PREDICATE_COUNT(power_test, filter);
-      return f;
-    }
-    const double mx = detail::abs_max4(ta.x, tb.x, tc.x, td.x);
-    const double my = detail::abs_max4(ta.y, tb.y, tc.y, td.y);
-    const double mz = detail::abs_max4(ta.z, tb.z, tc.z, td.z);
-    const double big = detail::max2(detail::max2(mx, my), mz);
-    const double mw = detail::abs_max4(wa, wb, wc, wd);
-    const int g = detail::decide(
-        value, detail::filter::kPowerTest * mx * my * mz * detail::max2(big * big, mw),
-        detail::in_guard(detail::min3(mx, my, mz), value, detail::filter::kGuardDegree5));
-    if (g != detail::kUndecided) RSTRUCT_PREDICATE_COUNT(power_test, filter);
-    return g;
+    return lifted_two_stage<true>(a, b, c, d, e, aw, bw, cw, dw, ew);
   }
 
   /// The precomputed bounds (+inf: that filter never decides), for tests and reports.
@@ -229,6 +183,54 @@ class AlmostStaticFilter {
 
  private:
   static constexpr double kMaxFinite = 0x1.fffffffffffffp1023;
+
+  /// The two stages of insphere_filter_two_stage (kWeighted false: the weights are
+  /// ignored) and power_test_filter_two_stage: the expressions of
+  /// detail::lifted4_filter_points<kWeighted>, with the static bound tried first.
+  template <bool kWeighted>
+  int lifted_two_stage(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                       const Point3& e, double aw, double bw, double cw, double dw,
+                       double ew) const {
+    const Point3 ta = a - e, tb = b - e, tc = c - e, td = d - e;
+    double wa = 0, wb = 0, wc = 0, wd = 0;
+    if constexpr (kWeighted) {
+      wa = aw - ew, wb = bw - ew, wc = cw - ew, wd = dw - ew;
+    } else {
+      (void)aw, (void)bw, (void)cw, (void)dw, (void)ew;
+    }
+    using detail::lifted_height;
+    const detail::LiftedRows<double> rows{
+        ta.x, ta.y, ta.z, lifted_height(ta.x, ta.y, ta.z, wa),
+        tb.x, tb.y, tb.z, lifted_height(tb.x, tb.y, tb.z, wb),
+        tc.x, tc.y, tc.z, lifted_height(tc.x, tc.y, tc.z, wc),
+        td.x, td.y, td.z, lifted_height(td.x, td.y, td.z, wd)};
+    const double value = detail::lifted_det4_negated(rows);
+    const double static_bound = kWeighted ? power_test_bound_ : insphere_bound_;
+    int f = detail::decide(value, static_bound, std::fabs(value) <= kMaxFinite);
+    if (f == detail::kUndecided) [[unlikely]] {
+      const double mx = detail::abs_max4(ta.x, tb.x, tc.x, td.x);
+      const double my = detail::abs_max4(ta.y, tb.y, tc.y, td.y);
+      const double mz = detail::abs_max4(ta.z, tb.z, tc.z, td.z);
+      const double big = detail::max2(detail::max2(mx, my), mz);
+      const bool ok =
+          detail::in_guard(detail::min3(mx, my, mz), value, detail::filter::kGuardDegree5);
+      if constexpr (kWeighted) {
+        const double mw = detail::abs_max4(wa, wb, wc, wd);
+        f = detail::decide(
+            value, detail::filter::kPowerTest * mx * my * mz * detail::max2(big * big, mw), ok);
+      } else {
+        f = detail::decide(value, detail::filter::kInsphere * mx * my * mz * (big * big), ok);
+      }
+    }
+    if (f != detail::kUndecided) {
+      if constexpr (kWeighted) {
+        RSTRUCT_PREDICATE_COUNT(power_test, filter);
+      } else {
+        RSTRUCT_PREDICATE_COUNT(insphere, filter);
+      }
+    }
+    return f;
+  }
 
   void require_in_box(std::initializer_list<const Point3*> points) const {
     for (const Point3* p : points) {
