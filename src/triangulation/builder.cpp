@@ -351,9 +351,9 @@ void Builder::insert(VertexId p) {
 
 // Bowyer-Watson needs some cell in conflict with p, not necessarily the one containing
 // it. The walk starts in a cell incident to the previous point, close in the BRIO order;
-// the conflict region of p covers a neighbourhood of p, so that cell is often in conflict
-// already (on uniform points, for about half the insertions), and then the walk is
-// skipped. Otherwise the walk ends at the cell containing p, which conflicts with p unless
+// the conflict region of p covers a neighbourhood of p, so that cell is sometimes in
+// conflict already, and then the walk is skipped (2·10^5 uniform points: walk steps per
+// point 6.5 -> 5.7, instructions -0.7 %). Otherwise the walk ends at the cell containing p, which conflicts with p unless
 // p is hidden: then `conflict` is false. (Testing for conflicts at every step of the walk
 // as well was slower on points of a surface: a conflict cell met early can be a long thin
 // cell far from p, and the next walk, started from the new cells next to it, gets long.)
