@@ -244,6 +244,20 @@ std::int64_t local_search_share(std::int64_t total, std::int64_t weight_before,
   return upto(weight_through) - upto(weight_before);
 }
 
+/// Entries the domination passes may scan (0: no limit): the smaller of the per-entry and
+/// the absolute limit of `options`, each 0 when off.
+std::int64_t domination_work_limit(const SolverOptions& options, std::int64_t entries) {
+  std::int64_t limit = options.max_domination_work;
+  if (options.domination_work_per_entry > 0) {
+    const double per_entry = std::min(
+        options.domination_work_per_entry * static_cast<double>(std::max<std::int64_t>(entries, 1)),
+        9.0e18);
+    const auto scaled = std::max<std::int64_t>(static_cast<std::int64_t>(per_entry), 1);
+    limit = limit > 0 ? std::min(limit, scaled) : scaled;
+  }
+  return limit;
+}
+
 }  // namespace
 
 const char* to_string(SearchLimit limit) {
@@ -265,16 +279,9 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
                             " (0-based) is covered by no column; no cover exists");
   }
   Solution sol;
-  double work_limit = options.domination_work_per_entry > 0
-                          ? options.domination_work_per_entry *
-                                static_cast<double>(std::max<std::int64_t>(inst.num_entries(), 1))
-                          : 9.0e18;
-  if (options.max_domination_work > 0) {
-    work_limit = std::min(work_limit, static_cast<double>(options.max_domination_work));
-  }
-  const detail::Reduction red = detail::reduce(
-      inst, options.use_domination, 0.5 * options.time_limit, clock,
-      work_limit < 9.0e18 ? std::max<std::int64_t>(static_cast<std::int64_t>(work_limit), 1) : 0);
+  const detail::Reduction red =
+      detail::reduce(inst, options.use_domination, 0.5 * options.time_limit, clock,
+                     domination_work_limit(options, inst.num_entries()));
   sol.stats.reduction_work = red.work;
   sol.stats.forced_columns = red.forced_cols;
   sol.stats.dominated_rows = red.dominated_rows;

@@ -294,6 +294,7 @@ bool Builder::in_conflict_general(CellId c, VertexId p) {
   const Cell& k = t_.cells_[c];
   const int inf = t_.infinite_index(c);
   if (inf < 0) {
+    // in_conflict() tried both filter stages on this finite cell.
     if (weights_ == nullptr) {
       // A Delaunay vertex is removed only by a point with its exact coordinates; the
       // filter never decides such a test (the point's row of differences is zero, so the
@@ -301,24 +302,18 @@ bool Builder::in_conflict_general(CellId c, VertexId p) {
       for (const VertexId v : k.v) {
         if (points_[v] == points_[p]) duplicate_of_ = v;
       }
-      if (box_filter_) {
-        // in_conflict() tried the filter.
-        return pr::detail::insphere_sos_after_filter(
-                   points_[k.v[0]], points_[k.v[1]], points_[k.v[2]], points_[k.v[3]],
-                   points_[p], input_id(k.v[0]), input_id(k.v[1]), input_id(k.v[2]),
-                   input_id(k.v[3]), input_id(p)) == Sign::positive;
-      }
-      return pr::insphere_sos(points_[k.v[0]], points_[k.v[1]], points_[k.v[2]],
-                              points_[k.v[3]], points_[p], input_id(k.v[0]),
-                              input_id(k.v[1]), input_id(k.v[2]), input_id(k.v[3]),
-                              input_id(p)) == Sign::positive;
+      return pr::detail::insphere_sos_after_filter(
+                 points_[k.v[0]], points_[k.v[1]], points_[k.v[2]], points_[k.v[3]],
+                 points_[p], input_id(k.v[0]), input_id(k.v[1]), input_id(k.v[2]),
+                 input_id(k.v[3]), input_id(p)) == Sign::positive;
     }
     const auto wp = [&](VertexId v) { return WeightedPoint{points_[v], weights_[v]}; };
-    return pr::power_test_sos(wp(k.v[0]), wp(k.v[1]), wp(k.v[2]), wp(k.v[3]), wp(p),
-                              input_id(k.v[0]), input_id(k.v[1]), input_id(k.v[2]),
-                              input_id(k.v[3]), input_id(p)) == Sign::positive;
+    return pr::detail::power_test_sos_after_filter(
+               wp(k.v[0]), wp(k.v[1]), wp(k.v[2]), wp(k.v[3]), wp(p), input_id(k.v[0]),
+               input_id(k.v[1]), input_id(k.v[2]), input_id(k.v[3]),
+               input_id(p)) == Sign::positive;
   }
-  const int o = t_.orient_replaced(c, inf, points_[p], box_filter_ ? &*box_filter_ : nullptr);
+  const int o = t_.orient_replaced(c, inf, points_[p], &*box_filter_);
   if (o != 0) return o > 0;
   // p lies in the plane of the hull facet: decide in that plane (2D power test).
   VertexId f[3];
@@ -366,7 +361,7 @@ CellId Builder::locate_conflict(VertexId p, bool& conflict) {
     return start;
   }
   const CellId c = t_.walk(points_[p], start, rng_, stats.walk_steps, stats.orient_calls,
-                           box_filter_ ? &*box_filter_ : nullptr);
+                           &*box_filter_);
   ++stats.power_test_calls;
   conflict = c == start ? false : in_conflict(c, p);
   return c;

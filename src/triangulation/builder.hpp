@@ -108,7 +108,7 @@ class Builder {
   /// The almost-static insphere / power-test filter over the points' bounding box (and
   /// weight range), tried before the semi-static bound on the same value (a decided sign is
   /// exact, and the perturbation only matters where the exact sign is zero, which the
-  /// filter never claims).
+  /// filter never claims). Engaged by run() before the first insertion.
   std::optional<predicates::AlmostStaticFilter> box_filter_;
   /// Two bits per cell (a Mark), 32 cells per word: 1/4 byte per cell of peak memory.
   std::vector<std::uint64_t> marks_;
