@@ -377,27 +377,40 @@ void Builder::find_conflict_region(CellId start, VertexId p) {
 
 template <bool kWeighted>
 void Builder::find_conflict_region_impl(CellId start, VertexId p) {
+  auto& cells = t_.cells_;
+  const auto prefetch_neighbors = [&](CellId c) {
+    for (int i = 0; i < 4; ++i) __builtin_prefetch(&cells[cells[c].n[i] >> 2]);
+  };
   conflict_.clear();
   outside_.clear();
   boundary_.clear();
-  stack_.clear();
   set_mark(start, kConflict);
-  stack_.push_back(start);
-  while (!stack_.empty()) {
-    const CellId x = stack_.back();
-    stack_.pop_back();
-    conflict_.push_back(x);
-    // The neighbours are usually not in cache: start all four loads before testing.
-    const Cell& k = t_.cells_[x];
-    for (int i = 0; i < 4; ++i) __builtin_prefetch(&t_.cells_[k.n[i] >> 2]);
+  conflict_.push_back(start);
+  prefetch_neighbors(start);
+  // Breadth first, conflict_ being the queue: a cell joins the queue well before its
+  // neighbours are tested, and its neighbours' cells are prefetched when it joins. When it
+  // is taken from the queue, the points of its untested neighbours are prefetched, all
+  // before the first test: the tests then rarely wait for memory (cells and points of a
+  // cavity are scattered over the arrays).
+  for (std::size_t head = 0; head < conflict_.size(); ++head) {
+    const CellId x = conflict_[head];
+    const Cell& k = cells[x];
     for (int i = 0; i < 4; ++i) {
-      const CellId y = t_.cells_[x].n[i] >> 2;
+      const CellId y = k.n[i] >> 2;
+      if (mark(y) != kNone) continue;
+      for (const VertexId v : cells[y].v) {
+        if (v != kInfiniteVertex) __builtin_prefetch(&points_[v]);
+      }
+    }
+    for (int i = 0; i < 4; ++i) {
+      const CellId y = k.n[i] >> 2;
       const unsigned m = mark(y);
       if (m == kConflict) continue;
       if (m == kNone) {
         if (in_conflict<kWeighted>(y, p)) {
           set_mark(y, kConflict);
-          stack_.push_back(y);
+          conflict_.push_back(y);
+          prefetch_neighbors(y);
           continue;
         }
         set_mark(y, kOutside);

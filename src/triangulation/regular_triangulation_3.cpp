@@ -140,6 +140,8 @@ CellId RegularTriangulation3::walk(const Point3& q, CellId start, std::uint64_t&
       c = inner;
       continue;
     }
+    // The next cell is one of the neighbours: start their loads before the tests.
+    for (int i = 0; i < 4; ++i) __builtin_prefetch(&cells_[cells_[c].n[i] >> 2]);
     const int r = static_cast<int>(next_bits(rng) & 3u);
     bool moved = false;
     for (int t = 0; t < 4; ++t) {
