@@ -187,7 +187,9 @@ class Classifier {
     // The star's cells and facet flags, read once (independent loads, see
     // classify_facets) into a local copy that both passes use.
     out.star.resize(cells.size());
+    for (std::size_t k = 0; k < std::min(cells.size(), kAhead); ++k) prefetch(cells[k]);
     for (std::size_t k = 0; k < cells.size(); ++k) {
+      if (k + kAhead < cells.size()) prefetch(cells[k + kAhead]);
       StarCell& local = out.star[k];
       local.v = rt_.vertices(cells[k]);
       const std::uint8_t* flags = &facet_in_k_[4 * std::size_t{cells[k]}];
@@ -261,6 +263,13 @@ class Classifier {
       }
       if (in_k) out.edges.push_back({v, u});
     }
+  }
+
+  /// Star cells read ahead of use: the stars' cells and their facet flags are scattered.
+  static constexpr std::size_t kAhead = 8;
+  void prefetch(CellId c) const {
+    rt_.prefetch_cell(c);
+    __builtin_prefetch(facet_in_k_.data() + 4 * std::size_t{c});
   }
 
   void classify_vertex(VertexId v, WorkerLists& out) {

@@ -30,6 +30,7 @@ VertexStars::VertexStars(const RegularTriangulation3& rt, unsigned threads) {
   // Neighbours: the other finite vertices of the star, sorted and deduplicated. Each
   // chunk of vertices fills its own list; the lists are then concatenated in order.
   constexpr std::size_t kChunk = 4096;
+  constexpr std::size_t kAhead = 8;  // star cells are read this far ahead (scattered loads)
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
   std::vector<std::vector<VertexId>> lists(chunks);
   std::vector<std::vector<std::uint32_t>> counts(chunks);
@@ -49,7 +50,11 @@ VertexStars::VertexStars(const RegularTriangulation3& rt, unsigned threads) {
       for (std::size_t v = first; v < last; ++v) {
         scratch.clear();
         const auto mark = static_cast<VertexId>(v + 1);
-        for (const CellId c : cells(static_cast<VertexId>(v))) {
+        const auto star = cells(static_cast<VertexId>(v));
+        for (std::size_t k = 0; k < std::min(star.size(), kAhead); ++k) rt.prefetch_cell(star[k]);
+        for (std::size_t k = 0; k < star.size(); ++k) {
+          if (k + kAhead < star.size()) rt.prefetch_cell(star[k + kAhead]);
+          const CellId c = star[k];
           for (int i = 0; i < 4; ++i) {
             const VertexId u = rt.vertex(c, i);
             if (u != kInfiniteVertex && u != v && seen[u] != mark) {

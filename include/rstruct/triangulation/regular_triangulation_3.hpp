@@ -192,6 +192,9 @@ class RegularTriangulation3 {
   bool is_infinite(const Facet& f) const;
   bool is_infinite(const Edge& e) const;
 
+  /// Starts loading cell c into the cache (a hint; any id is allowed). Loops that read
+  /// the cells of a list (a star) at random call it some iterations ahead.
+  void prefetch_cell(CellId c) const { __builtin_prefetch(cells_.data() + c); }
   /// Vertex i (0..3) of cell c. \pre is_cell(c).
   VertexId vertex(CellId c, int i) const { return cells_[c].v[i]; }
   std::array<VertexId, 4> vertices(CellId c) const {
