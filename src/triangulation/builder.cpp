@@ -402,20 +402,33 @@ void Builder::find_conflict_region_impl(CellId start, VertexId p) {
         if (v != kInfiniteVertex) __builtin_prefetch(&points_[v]);
       }
     }
+    // The filter values of the untested neighbours first, then the branches on them:
+    // the (independent) evaluations overlap instead of waiting, one by one, for a branch
+    // on a sign that is hard to predict.
+    int untested[4];
+    int count = 0;
     for (int i = 0; i < 4; ++i) {
-      const CellId y = k.n[i] >> 2;
-      const unsigned m = mark(y);
-      if (m == kConflict) continue;
+      const unsigned m = mark(k.n[i] >> 2);
       if (m == kNone) {
-        if (in_conflict<kWeighted>(y, p)) {
-          set_mark(y, kConflict);
-          conflict_.push_back(y);
-          prefetch_neighbors(y);
-          continue;
-        }
-        set_mark(y, kOutside);
-        outside_.push_back(y);
+        untested[count++] = i;
+      } else if (m == kOutside) {
+        boundary_.push_back({x, i});
       }
+    }
+    int f[4];
+    for (int j = 0; j < count; ++j) f[j] = filtered_conflict<kWeighted>(k.n[untested[j]] >> 2, p);
+    for (int j = 0; j < count; ++j) {
+      const int i = untested[j];
+      const CellId y = k.n[i] >> 2;
+      const bool conflict = f[j] != pr::detail::kUndecided ? f[j] > 0 : in_conflict_general(y, p);
+      if (conflict) {
+        set_mark(y, kConflict);
+        conflict_.push_back(y);
+        prefetch_neighbors(y);
+        continue;
+      }
+      set_mark(y, kOutside);
+      outside_.push_back(y);
       boundary_.push_back({x, i});
     }
   }

@@ -49,23 +49,29 @@ class Builder {
   __attribute__((always_inline))
 #endif
   bool in_conflict(CellId c, VertexId p) {
+    const int f = filtered_conflict<kWeighted>(c, p);
+    if (f != predicates::detail::kUndecided) [[likely]] return f > 0;
+    return in_conflict_general(c, p);
+  }
+  /// The filter's sign of the conflict test of a finite cell (1: conflict, −1: none), or
+  /// kUndecided (also for an infinite cell): then in_conflict_general decides.
+  template <bool kWeighted>
+#if defined(__GNUC__)
+  __attribute__((always_inline))
+#endif
+  int filtered_conflict(CellId c, VertexId p) {
     const Cell& k = t_.cells_[c];
     const bool finite = (k.v[0] != kInfiniteVertex) & (k.v[1] != kInfiniteVertex) &
                         (k.v[2] != kInfiniteVertex) & (k.v[3] != kInfiniteVertex);
-    if (finite) [[likely]] {
-      int f;
-      if constexpr (kWeighted) {
-        f = box_filter_->power_test_filter_two_stage(
-            points_[k.v[0]], points_[k.v[1]], points_[k.v[2]], points_[k.v[3]], points_[p],
-            weights_[k.v[0]], weights_[k.v[1]], weights_[k.v[2]], weights_[k.v[3]],
-            weights_[p]);
-      } else {
-        f = box_filter_->insphere_filter_two_stage(points_[k.v[0]], points_[k.v[1]],
-                                                   points_[k.v[2]], points_[k.v[3]], points_[p]);
-      }
-      if (f != predicates::detail::kUndecided) [[likely]] return f > 0;
+    if (!finite) [[unlikely]] return predicates::detail::kUndecided;
+    if constexpr (kWeighted) {
+      return box_filter_->power_test_filter_two_stage(
+          points_[k.v[0]], points_[k.v[1]], points_[k.v[2]], points_[k.v[3]], points_[p],
+          weights_[k.v[0]], weights_[k.v[1]], weights_[k.v[2]], weights_[k.v[3]], weights_[p]);
+    } else {
+      return box_filter_->insphere_filter_two_stage(points_[k.v[0]], points_[k.v[1]],
+                                                    points_[k.v[2]], points_[k.v[3]], points_[p]);
     }
-    return in_conflict_general(c, p);
   }
   bool in_conflict(CellId c, VertexId p) {
     return weights_ == nullptr ? in_conflict<false>(c, p) : in_conflict<true>(c, p);
