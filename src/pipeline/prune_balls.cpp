@@ -1,5 +1,7 @@
 #include "rstruct/pipeline/prune_balls.hpp"
 
+#include <cstdint>
+#include <span>
 #include <string>
 
 #include "rstruct/core/error.hpp"
@@ -18,13 +20,23 @@ PruneResult prune_balls(std::span<const Ball> shrunk, std::span<const Point3> po
   Report& rep = report ? *report : scratch;
 
   Report::Stage sets_stage(rep, "covering sets");
-  const poles::CoveringSets sets = poles::covering_sets(shrunk, points, options.threads);
-  result.entries = sets.entry_count();
-  // The set-cover module works on signed 32-bit rows and 64-bit offsets.
-  std::vector<std::int64_t> starts(sets.column_offsets.begin(), sets.column_offsets.end());
-  std::vector<std::int32_t> rows(sets.rows.begin(), sets.rows.end());
-  const setcover::Instance instance =
-      setcover::Instance::from_csr(static_cast<std::int32_t>(sets.row_count), starts, rows);
+  // The sets and their conversion are gone before the solver starts: with 10^6 samples
+  // the matrix has ~10^8 entries, and every copy of it costs 4 bytes per entry.
+  const setcover::Instance instance = [&] {
+    const poles::CoveringSets sets = poles::covering_sets(shrunk, points, options.threads);
+    result.entries = sets.entry_count();
+    // The set-cover module works on signed 32-bit rows and 64-bit offsets. The rows are
+    // read in place (int32 may alias uint32; every row id is below row_count <= 2^31 - 1).
+    if (sets.row_count > static_cast<std::uint32_t>(INT32_MAX)) {
+      throw InvalidInput("pruning: more than 2^31 - 1 points");
+    }
+    const std::vector<std::int64_t> starts(sets.column_offsets.begin(),
+                                           sets.column_offsets.end());
+    const std::span<const std::int32_t> rows(
+        reinterpret_cast<const std::int32_t*>(sets.rows.data()), sets.rows.size());
+    return setcover::Instance::from_csr(static_cast<std::int32_t>(sets.row_count), starts,
+                                        rows);
+  }();
   sets_stage.finish();
 
   if (const std::int32_t row = instance.first_uncoverable_row(); row >= 0) {

@@ -75,6 +75,13 @@ void improve_by_local_search(const Instance& inst, detail::LagrangianState& st,
   std::vector<std::int32_t> entries;
   std::vector<double> costs;
   std::vector<char> row_ok(static_cast<std::size_t>(inst.num_rows()), 0);
+  // Sized exactly: on large instances (10^8 entries) growth by doubling would hold up to
+  // twice the entries, on top of the instance and of the copy made from them.
+  std::int64_t kept_entries = 0;
+  for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
+    if (allowed[j]) kept_entries += static_cast<std::int64_t>(inst.column(j).size());
+  }
+  entries.reserve(static_cast<std::size_t>(kept_entries));
   for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
     if (!allowed[j]) continue;
     map.push_back(j);
@@ -91,6 +98,8 @@ void improve_by_local_search(const Instance& inst, detail::LagrangianState& st,
     return;
   }
   const Instance sub = Instance::from_csr(inst.num_rows(), start, entries, std::move(costs));
+  std::vector<std::int32_t>().swap(entries);  // sub holds its own copy
+  std::vector<std::int64_t>().swap(start);
   if (sub.num_cols() <= kExactColumns) {
     const auto bb = detail::branch_and_bound(sub, st.cover_cost, kExactNodes, budget.deadline, clock);
     out.exact_nodes = bb.nodes;
