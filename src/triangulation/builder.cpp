@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <new>
 #include <numeric>
 #include <string>
 
@@ -100,9 +101,16 @@ void Builder::run() {
   if (reorder_) permute_to_insertion_order();
   t_.stats_.sort_seconds = clock.seconds();
   clock.reset();
-  // Delaunay of uniform points has about 6.7 cells per point; pages never touched cost
-  // nothing, so reserving generously avoids a reallocation (and its 2x peak) in practice.
-  t_.cells_.reserve(n * 7 + n / 2 + 64);
+  // Delaunay of uniform points has about 6.7 cells per point, of points on a surface up to
+  // about 20 (10^6 on a torus: 20.6). Pages never touched cost nothing (address space
+  // only), so room for 24 per point is reserved: no reallocation, which would copy the
+  // cells and touch their pages a second time. Where the system refuses that much address
+  // space, 7.5 per point, and reserve_for_projection() extrapolates as it goes.
+  try {
+    t_.cells_.reserve(std::min(kMaxCells, n * 24 + 64));
+  } catch (const std::bad_alloc&) {
+    t_.cells_.reserve(n * 7 + n / 2 + 64);
+  }
   marks_.reserve(t_.cells_.capacity() / 32 + 1);
   if (weights_ != nullptr) vertex_mark_.assign(n, 0);
   vertex_local_.assign(n, 0);
@@ -389,28 +397,29 @@ void Builder::find_conflict_region_impl(CellId start, VertexId p) {
   prefetch_neighbors(start);
   // Breadth first, conflict_ being the queue: a cell joins the queue well before its
   // neighbours are tested, and its neighbours' cells are prefetched when it joins. When it
-  // is taken from the queue, the points of its untested neighbours are prefetched, all
+  // is taken from the queue, the new points of its untested neighbours are prefetched, all
   // before the first test: the tests then rarely wait for memory (cells and points of a
   // cavity are scattered over the arrays).
   for (std::size_t head = 0; head < conflict_.size(); ++head) {
     const CellId x = conflict_[head];
     const Cell& k = cells[x];
-    for (int i = 0; i < 4; ++i) {
-      const CellId y = k.n[i] >> 2;
-      if (mark(y) != kNone) continue;
-      for (const VertexId v : cells[y].v) {
-        if (v != kInfiniteVertex) __builtin_prefetch(&points_[v]);
-      }
-    }
     // The filter values of the untested neighbours first, then the branches on them:
     // the (independent) evaluations overlap instead of waiting, one by one, for a branch
     // on a sign that is hard to predict.
     int untested[4];
     int count = 0;
     for (int i = 0; i < 4; ++i) {
-      const unsigned m = mark(k.n[i] >> 2);
+      const CellId y = k.n[i] >> 2;
+      const unsigned m = mark(y);
       if (m == kNone) {
         untested[count++] = i;
+        // y shares three vertices with x (whose test loaded them): only the one opposite
+        // the shared facet is new.
+        const VertexId v = cells[y].v[k.n[i] & 3u];
+        if (v != kInfiniteVertex) {
+          __builtin_prefetch(&points_[v]);
+          if constexpr (kWeighted) __builtin_prefetch(&weights_[v]);
+        }
       } else if (m == kOutside) {
         boundary_.push_back({x, i});
       }
