@@ -182,6 +182,9 @@ class Classifier {
     std::vector<std::uint32_t>& slot_of = out.slot_of;
     if (slot_of.size() < rt_.number_of_points()) slot_of.assign(rt_.number_of_points(), 0);
     for (std::size_t k = 0; k < slots; ++k) slot_of[first[k]] = static_cast<std::uint32_t>(k);
+    // The neighbours' points (edge ends and ring vertices) are needed after the pass over
+    // the star; they are scattered in memory.
+    for (const VertexId u : neighbors) rt_.prefetch_point(u);
     out.edge_in_k.assign(slots, 0);
     out.ring_offsets.assign(slots + 1, 0);
     // The star's cells and facet flags, read once (independent loads, see

@@ -195,6 +195,11 @@ class RegularTriangulation3 {
   /// Starts loading cell c into the cache (a hint; any id is allowed). Loops that read
   /// the cells of a list (a star) at random call it some iterations ahead.
   void prefetch_cell(CellId c) const { __builtin_prefetch(cells_.data() + c); }
+  /// Starts loading the point (and weight) of input point v. \pre v < number_of_points().
+  void prefetch_point(VertexId v) const {
+    __builtin_prefetch(points_.data() + v);
+    if (!weights_.empty()) __builtin_prefetch(weights_.data() + v);
+  }
   /// Vertex i (0..3) of cell c. \pre is_cell(c).
   VertexId vertex(CellId c, int i) const { return cells_[c].v[i]; }
   std::array<VertexId, 4> vertices(CellId c) const {
