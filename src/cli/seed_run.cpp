@@ -157,8 +157,8 @@ pipeline::SeedPolytope run_seed(const std::vector<Point3>& samples,
   }
 
   if (!context.quiet) {
-    const std::initializer_list<const char*> pole_stages = {"delaunay", "poles", "labels",
-                                                            "pole distance"};
+    const std::initializer_list<const char*> pole_stages = {"delaunay", "poles",
+                                                            "labels + pole distance"};
     const Seconds dp = stage_sum(shared_report != nullptr ? *shared_report : report,
                                  pole_stages);
     const Seconds sb = stage_sum(report, {"surface balls"});
