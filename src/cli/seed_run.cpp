@@ -164,7 +164,7 @@ pipeline::SeedPolytope run_seed(const std::vector<Point3>& samples,
     const Seconds sb = stage_sum(report, {"surface balls"});
     const Seconds pr = stage_sum(report, {"covering sets", "set cover"});
     const Seconds al = stage_sum(report, {"regular triangulation", "vertex stars",
-                                          "dual complex", "collapse", "homology"});
+                                          "dual complex", "collapse + homology"});
     const Seconds out = stage_sum(report, {"sample map", "output"});
     char line[256];
     std::cerr << title << "\n";

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <sstream>
+#include <thread>
 
 #include "rstruct/complex/collapse.hpp"
 #include "rstruct/complex/dual_complex.hpp"
@@ -319,20 +321,43 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
   out.facet_classes = dual.facet_classes;
   dual_stage.finish();
 
-  Report::Stage collapse_stage(rep, "collapse");
-  // Depth-first collapse eats through a thick shell from one side, which ends on a closed
-  // surface; breadth-first fronts from both sides meet in non-manifold walls (measured in
-  // include/rstruct/complex/collapse.hpp).
-  const complex::CollapseResult collapsed =
-      complex::collapse_free_faces(k, complex::CollapseOrder::depth_first);
+  // The Betti numbers of K do not depend on the collapse: with two or more threads they are
+  // computed on one beside the collapse and the output's checks (all read K, none writes
+  // it); one stage, since they overlap.
+  Report::Stage collapse_stage(rep, "collapse + homology");
+  const auto collapse_and_check = [&] {
+    // Depth-first collapse eats through a thick shell from one side, which ends on a closed
+    // surface; breadth-first fronts from both sides meet in non-manifold walls (measured
+    // in include/rstruct/complex/collapse.hpp).
+    complex::CollapseResult c = complex::collapse_free_faces(k, complex::CollapseOrder::depth_first);
+    out.betti_output = complex::betti_numbers(c.complex);
+    out.manifold = complex::check_closed_2_manifold(c.complex);
+    return c;
+  };
+  complex::CollapseResult collapsed;
+  if (thread_count(options.threads, 2) < 2) {
+    out.betti_k = complex::betti_numbers(k);
+    collapsed = collapse_and_check();
+  } else {
+    std::exception_ptr betti_error;
+    std::thread betti_k([&] {
+      try {
+        out.betti_k = complex::betti_numbers(k);
+      } catch (...) {
+        betti_error = std::current_exception();
+      }
+    });
+    try {
+      collapsed = collapse_and_check();
+    } catch (...) {
+      betti_k.join();
+      throw;
+    }
+    betti_k.join();
+    if (betti_error) std::rethrow_exception(betti_error);
+  }
   const complex::SimplicialComplex& result = collapsed.complex;
   collapse_stage.finish();
-
-  Report::Stage homology_stage(rep, "homology");
-  out.betti_k = complex::betti_numbers(k);
-  out.betti_output = complex::betti_numbers(result);
-  out.manifold = complex::check_closed_2_manifold(result);
-  homology_stage.finish();
 
   // Output vertices: the kept balls that are vertices of the collapsed complex.
   std::vector<std::uint32_t> output_vertex_of_ball(ball_sample.size(), kNone);
