@@ -128,7 +128,6 @@ class Builder {
   }
   std::vector<std::uint8_t> vertex_mark_;  // per point (weighted only)
   std::vector<CellId> conflict_;
-  std::vector<CellId> stack_;
   std::vector<CellId> outside_;
   std::vector<BoundaryFacet> boundary_;
   std::vector<CellId> star_;                // new cell of boundary_[k]
