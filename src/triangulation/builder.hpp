@@ -40,6 +40,8 @@ class Builder {
   void make_first_cells(const VertexId (&v)[4]);
   void insert(VertexId p);
   CellId locate_conflict(VertexId p, bool& conflict);
+  /// The finite cell of star_ whose centroid is nearest to q (fallback if none).
+  CellId nearest_star_cell(const Point3& q, CellId fallback) const;
   /// Whether cell c conflicts with p (perturbed power test; insphere when unweighted).
   /// The common case, a finite cell decided by the filter, is inline (always: the conflict
   /// search calls it for every cell it visits); everything else goes to
@@ -152,6 +154,9 @@ class Builder {
   std::vector<VertexId> cavity_vertices_;
   std::vector<HiddenPoint> raw_hidden_;
   CellId last_ = 0;
+  /// Whether star_ holds the cells of the latest insertion (false after a hidden point,
+  /// whose cell is then last_, and before the first insertion).
+  bool star_is_latest_ = false;
   /// Delaunay: the vertex with the inserted point's coordinates met by a conflict test of
   /// the current insertion, if any (it is removed when the point is in conflict).
   VertexId duplicate_of_ = kInfiniteVertex;
