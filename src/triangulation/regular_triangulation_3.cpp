@@ -120,11 +120,64 @@ CellId RegularTriangulation3::any_cell() const {
   return kNoCell;
 }
 
+// The facet of finite cell c (not the one towards `previous`) that the line through o
+// with direction w = q − o crosses, or −1: a facet is crossed iff the three values
+// det(w, a − o, b − o) of its edges (a, b), taken around it, have one sign. Floating
+// point, and only a preference of the walk.
+int RegularTriangulation3::segment_exit_facet(CellId c, const Point3& o, double wx, double wy,
+                                              double wz, CellId previous) const {
+  double d[4][3];
+  for (int j = 0; j < 4; ++j) {
+    const Point3& v = points_[cells_[c].v[j]];
+    d[j][0] = v.x - o.x;
+    d[j][1] = v.y - o.y;
+    d[j][2] = v.z - o.z;
+  }
+  const auto edge = [&](int a, int b) {
+    const double cx = d[a][1] * d[b][2] - d[a][2] * d[b][1];
+    const double cy = d[a][2] * d[b][0] - d[a][0] * d[b][2];
+    const double cz = d[a][0] * d[b][1] - d[a][1] * d[b][0];
+    return wx * cx + wy * cy + wz * cz;
+  };
+  const double e01 = edge(0, 1), e02 = edge(0, 2), e03 = edge(0, 3), e12 = edge(1, 2),
+               e13 = edge(1, 3), e23 = edge(2, 3);
+  // Facet i is the triangle of the other three vertices (a, b, c): edges ab, bc, ca.
+  const double around[4][3] = {
+      {e12, e23, -e13}, {e02, e23, -e03}, {e01, e13, -e03}, {e01, e12, -e02}};
+  for (int i = 0; i < 4; ++i) {
+    if (neighbor(c, i) == previous) continue;
+    const double* f = around[i];
+    if ((f[0] > 0 && f[1] > 0 && f[2] > 0) || (f[0] < 0 && f[1] < 0 && f[2] < 0)) return i;
+  }
+  return -1;
+}
+
 CellId RegularTriangulation3::walk(const Point3& q, CellId start, std::uint64_t& rng,
                                    std::uint64_t& steps, std::uint64_t& orients,
                                    const pr::AlmostStaticFilter* filter) const {
   CellId c = start;
   CellId previous = kNoCell;
+  // The walk prefers, among the facets q is beyond, the one the segment from the start
+  // cell's centroid o to q leaves through: it then follows the segment instead of
+  // wandering. Points on a surface make long thin cells, through which a walk choosing at
+  // random zig-zags: 10^6 points on a torus took 33 steps per point (one walk of 11,380
+  // steps covered 9 sample spacings), 14 with the segment (3·10^5 points: 22.3 -> 11.5
+  // steps, insertion 2.73 -> 2.54 s). The segment test is a floating-point heuristic
+  // (a wrong answer only costs steps): every move still crosses a facet that the exact
+  // orientation puts q strictly beyond, and any such walk terminates in a regular
+  // triangulation (Edelsbrunner's acyclicity theorem); the random order remains for the
+  // rest.
+  bool follow_segment = infinite_index(c) < 0;
+  Point3 o{0, 0, 0};
+  if (follow_segment) {
+    for (int j = 0; j < 4; ++j) {
+      const Point3& v = points_[cells_[c].v[j]];
+      o.x += 0.25 * v.x;
+      o.y += 0.25 * v.y;
+      o.z += 0.25 * v.z;
+    }
+  }
+  const double wx = q.x - o.x, wy = q.y - o.y, wz = q.z - o.z;
   // The stochastic walk terminates with probability 1 (Devillers, Pion & Teillaud); the
   // bound only turns a pathological run into a linear scan.
   const std::size_t limit = 4 * cells_.size() + 1000;
@@ -138,10 +191,22 @@ CellId RegularTriangulation3::walk(const Point3& q, CellId start, std::uint64_t&
       if (orient_replaced(c, inf, q, filter) > 0) return c;
       previous = c;
       c = inner;
+      follow_segment = false;  // beyond the hull: the segment is left behind
       continue;
     }
     // The next cell is one of the neighbours: start their loads before the tests.
     for (int i = 0; i < 4; ++i) __builtin_prefetch(&cells_[cells_[c].n[i] >> 2]);
+    if (follow_segment) {
+      const int exit = segment_exit_facet(c, o, wx, wy, wz, previous);
+      if (exit >= 0) {
+        ++orients;
+        if (orient_replaced(c, exit, q, filter) < 0) {
+          previous = c;
+          c = neighbor(c, exit);
+          continue;
+        }
+      }
+    }
     const int r = static_cast<int>(next_bits(rng) & 3u);
     bool moved = false;
     for (int t = 0; t < 4; ++t) {

@@ -336,6 +336,8 @@ class RegularTriangulation3 {
   CellId walk(const Point3& q, CellId start, std::uint64_t& rng, std::uint64_t& steps,
               std::uint64_t& orients,
               const predicates::AlmostStaticFilter* filter = nullptr) const;
+  int segment_exit_facet(CellId c, const Point3& o, double wx, double wy, double wz,
+                         CellId previous) const;
   /// Some live cell, for walks without a usable hint.
   CellId any_cell() const;
   /// Rebuilds vertex_cell_, the counts and the hidden/duplicate reports from the cells and
