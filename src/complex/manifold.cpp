@@ -9,7 +9,13 @@ namespace rstruct::complex {
 namespace {
 
 std::string edge_text(const Edge& e) {
-  return "(" + std::to_string(e[0]) + ", " + std::to_string(e[1]) + ")";
+  // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on "(" + string.
+  std::string text = "(";
+  text += std::to_string(e[0]);
+  text += ", ";
+  text += std::to_string(e[1]);
+  text += ")";
+  return text;
 }
 
 /// The edge of triangle t other than `e` that contains vertex (index) v.

@@ -1,10 +1,13 @@
 #include "rstruct/complex/simplicial_complex.hpp"
 
 #include <algorithm>
+#include <exception>
 #include <limits>
 #include <string>
+#include <thread>
 
 #include "rstruct/core/error.hpp"
+#include "rstruct/core/parallel.hpp"
 
 namespace rstruct::complex {
 namespace {
@@ -232,41 +235,102 @@ SimplicialComplex SimplicialComplex::closure_of(std::span<const Edge> edges) {
 
 namespace {
 
-/// Throws naming a simplex of `closure` (dimension K − 1) missing from `listed`, and a
-/// listed coface that has it as a face.
-template <std::size_t K, std::size_t C>
-void require_listed(const std::vector<std::array<VertexId, K>>& closure,
-                    const std::vector<std::array<VertexId, K>>& listed,
-                    const std::vector<std::array<VertexId, C>>& cofaces,
-                    const std::vector<std::array<SimplexIndex, C>>& coface_faces) {
-  if (closure.size() == listed.size()) return;
-  // listed ⊆ closure, both sorted: the first mismatch is missing.
-  std::size_t i = 0;
-  while (i < listed.size() && closure[i] == listed[i]) ++i;
-  for (std::size_t c = 0; c < cofaces.size(); ++c) {
-    for (std::size_t f = 0; f < C; ++f) {
-      if (coface_faces[c][f] == i) {
-        throw InvalidInput(std::string("complex not closed: ") + list_name(C) + " " +
-                           tuple_text(cofaces[c]) + " has face " + tuple_text(closure[i]) +
-                           " that is not listed");
-      }
-    }
+/// Index of a tuple in a sorted, duplicate-free list of K-tuples: the range of tuples with
+/// the same first vertex comes from a table by first vertex (when the ids are dense
+/// enough for one: at most 4 entries per tuple), then a binary search inside it.
+template <std::size_t K>
+class SortedLookup {
+ public:
+  explicit SortedLookup(const std::vector<std::array<VertexId, K>>& list) : list_(list) {
+    if (list.empty() || list.back()[0] > 4 * list.size() + 1024) return;
+    start_.assign(static_cast<std::size_t>(list.back()[0]) + 2, 0);
+    for (const auto& s : list) ++start_[s[0] + 1];
+    for (std::size_t v = 1; v < start_.size(); ++v) start_[v] += start_[v - 1];
   }
-  throw InvalidInput("complex not closed: face " + tuple_text(closure[i]) + " is not listed");
+  /// The index of s, or kRemoved if s is not in the list.
+  SimplexIndex find(const std::array<VertexId, K>& s) const {
+    auto begin = list_.begin();
+    auto end = list_.end();
+    if (!start_.empty()) {
+      if (std::size_t{s[0]} + 1 >= start_.size()) return kRemoved;
+      end = begin + static_cast<std::ptrdiff_t>(start_[s[0] + 1]);
+      begin += static_cast<std::ptrdiff_t>(start_[s[0]]);
+    }
+    const auto it = std::lower_bound(begin, end, s);
+    return it != end && *it == s ? static_cast<SimplexIndex>(it - list_.begin()) : kRemoved;
+  }
+
+ private:
+  const std::vector<std::array<VertexId, K>>& list_;
+  std::vector<std::uint32_t> start_;
+};
+
+/// coface_faces[c][i] = the index in `lower` of face i of cofaces[c]; throws naming a
+/// coface and its face missing from `lower`. In parallel chunks.
+template <std::size_t C, class Lookup>
+void link_faces(const std::vector<std::array<VertexId, C>>& cofaces, const Lookup& lower,
+                std::vector<std::array<SimplexIndex, C>>& coface_faces, unsigned threads) {
+  coface_faces.resize(cofaces.size());
+  parallel_chunks(cofaces.size(), threads, std::size_t{1} << 15,
+                  [&](std::size_t b, std::size_t e, unsigned /*worker*/) {
+                    for (std::size_t c = b; c < e; ++c) {
+                      for (std::size_t i = 0; i < C; ++i) {
+                        const auto f = without(cofaces[c], i);
+                        const SimplexIndex index = lower.find(f);
+                        if (index == kRemoved) {
+                          throw InvalidInput(std::string("complex not closed: ") +
+                                             list_name(C) + " " + tuple_text(cofaces[c]) +
+                                             " has face " + tuple_text(f) +
+                                             " that is not listed");
+                        }
+                        coface_faces[c][i] = index;
+                      }
+                    }
+                  });
 }
 
 }  // namespace
 
-SimplicialComplex SimplicialComplex::from_closed_lists(const SimplexLists& simplices) {
-  SimplicialComplex k = closure_of(simplices);
-  require_listed(k.triangles_, normalized_unique(simplices.triangles), k.tetrahedra_,
-                 k.tetrahedron_faces_);
-  require_listed(k.edges_, normalized_unique(simplices.edges), k.triangles_, k.triangle_faces_);
-  std::vector<std::array<VertexId, 1>> listed(simplices.vertices.size());
-  for (std::size_t i = 0; i < listed.size(); ++i) listed[i] = {simplices.vertices[i]};
-  std::vector<std::array<VertexId, 1>> closure(k.vertices_.size());
-  for (std::size_t i = 0; i < closure.size(); ++i) closure[i] = {k.vertices_[i]};
-  require_listed(closure, normalized_unique(listed), k.edges_, k.edge_faces_);
+// The lists are sorted (the triangles, usually the longest, on a second thread) and
+// every face is then looked up in the sorted list below it, in parallel chunks: no sort
+// of all the faces of all the cofaces, as closure_of needs (the dual complex of a
+// 85,237-ball double torus: 0.23 s for closure_of, one thread).
+SimplicialComplex SimplicialComplex::from_closed_lists(const SimplexLists& simplices,
+                                                       unsigned threads) {
+  SimplicialComplex k;
+  std::vector<std::array<VertexId, 1>> vertices(simplices.vertices.size());
+  const auto sort_others = [&] {
+    k.tetrahedra_ = normalized_unique(simplices.tetrahedra);
+    k.edges_ = normalized_unique(simplices.edges);
+    for (std::size_t i = 0; i < vertices.size(); ++i) vertices[i] = {simplices.vertices[i]};
+    vertices = normalized_unique(vertices);
+  };
+  if (thread_count(threads, 2) >= 2) {
+    std::exception_ptr error;
+    std::thread triangles([&] {
+      try {
+        k.triangles_ = normalized_unique(simplices.triangles);
+      } catch (...) {
+        error = std::current_exception();
+      }
+    });
+    try {
+      sort_others();
+    } catch (...) {
+      triangles.join();
+      throw;
+    }
+    triangles.join();
+    if (error) std::rethrow_exception(error);
+  } else {
+    k.triangles_ = normalized_unique(simplices.triangles);
+    sort_others();
+  }
+  k.vertices_.resize(vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i) k.vertices_[i] = vertices[i][0];
+  link_faces(k.tetrahedra_, SortedLookup<3>(k.triangles_), k.tetrahedron_faces_, threads);
+  link_faces(k.triangles_, SortedLookup<2>(k.edges_), k.triangle_faces_, threads);
+  link_faces(k.edges_, SortedLookup<1>(vertices), k.edge_faces_, threads);
   return k;
 }
 

@@ -291,7 +291,6 @@ class Classifier {
   TriangulationDualComplex assemble() {
     TriangulationDualComplex result;
     SimplexLists lists;
-    std::array<std::size_t, 4> in_k{};
     for (WorkerLists& l : lists_) {
       for (int d = 0; d < 4; ++d) result.triangulation_counts[d] += l.finite[d];
       for (int k = 1; k < 4; ++k) result.facet_classes[k] += l.facet_classes[k];
@@ -301,15 +300,20 @@ class Classifier {
       lists.vertices.insert(lists.vertices.end(), l.vertices.begin(), l.vertices.end());
       l = WorkerLists{};  // frees the scratch as well
     }
-    in_k = {lists.vertices.size(), lists.edges.size(), lists.triangles.size(),
-            lists.tetrahedra.size()};
-    result.facet_classes[0] = result.triangulation_counts[2] - in_k[2];
-    result.complex = SimplicialComplex::closure_of(lists);
-    // K is closed under faces by the top-down rule: the closure adds nothing.
+    result.facet_classes[0] = result.triangulation_counts[2] - lists.triangles.size();
+    // K is closed under faces by the top-down rule (a face of a simplex in K is in K).
+    try {
+      result.complex = SimplicialComplex::from_closed_lists(lists, threads_);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(std::string("dual complex: the simplices classified in K are not "
+                                     "closed under faces (") + e.what() + ")");
+    }
+    const std::array<std::size_t, 4> listed = {lists.vertices.size(), lists.edges.size(),
+                                               lists.triangles.size(), lists.tetrahedra.size()};
     for (int d = 0; d < 4; ++d) {
-      RSTRUCT_ASSERT_MSG(result.complex.size(d) == in_k[d],
-                         "dual complex: the simplices of dimension " + std::to_string(d) +
-                             " classified in K are not closed under faces");
+      RSTRUCT_ASSERT_MSG(result.complex.size(d) == listed[static_cast<std::size_t>(d)],
+                         "dual complex: a simplex of dimension " + std::to_string(d) +
+                             " was classified twice");
     }
     return result;
   }

@@ -87,6 +87,37 @@ TEST_CASE("explicit lists must be closed") {
   CHECK_THROWS_AS(SimplicialComplex::from_closed_lists(lists), InvalidInput);
 }
 
+TEST_CASE("closed lists with sparse vertex ids, shuffled and repeated") {
+  // Ids far apart (the lookups then search whole lists instead of a table by first
+  // vertex), tuples in any order and listed twice: the same complex as closure_of.
+  const auto base = SimplicialComplex::closure_of(testing::subdivided_box(2, 2, 1));
+  const auto sparse = [](VertexId v) { return v * 1'000'003u + 11u; };
+  SimplexLists lists;
+  for (const VertexId v : base.vertices()) lists.vertices.push_back(sparse(v));
+  for (const auto& e : base.edges()) lists.edges.push_back({sparse(e[1]), sparse(e[0])});
+  for (const auto& t : base.triangles()) {
+    lists.triangles.push_back({sparse(t[2]), sparse(t[0]), sparse(t[1])});
+  }
+  for (const auto& t : base.tetrahedra()) {
+    lists.tetrahedra.push_back({sparse(t[3]), sparse(t[1]), sparse(t[2]), sparse(t[0])});
+  }
+  lists.triangles.push_back(lists.triangles.front());
+  const auto expected = SimplicialComplex::closure_of(lists);
+  for (const unsigned threads : {1u, 2u}) {
+    const auto k = SimplicialComplex::from_closed_lists(lists, threads);
+    CHECK(k.is_valid());
+    CHECK(k.edges() == expected.edges());
+    CHECK(k.triangles() == expected.triangles());
+    CHECK(k.tetrahedra() == expected.tetrahedra());
+    for (SimplexIndex t = 0; t < k.size(3); ++t) {
+      CHECK(k.tetrahedron_faces(t) == expected.tetrahedron_faces(t));
+    }
+    SimplexLists missing = lists;
+    missing.edges.erase(missing.edges.begin() + 3);
+    CHECK_THROWS_AS(SimplicialComplex::from_closed_lists(missing, threads), InvalidInput);
+  }
+}
+
 TEST_CASE("subcomplex keeps indices consistent and rejects non-closed selections") {
   const auto k = SimplicialComplex::closure_of(testing::tetrahedron_boundary());
   std::array<std::vector<bool>, 4> keep = {std::vector<bool>(4, true), std::vector<bool>(6, true),
@@ -133,10 +164,13 @@ TEST_CASE("random closures are valid and closed") {
     explicit_lists.edges = k.edges();
     explicit_lists.triangles = k.triangles();
     explicit_lists.tetrahedra = k.tetrahedra();
-    const auto again = SimplicialComplex::from_closed_lists(explicit_lists);
-    RC_ASSERT(again.vertices() == k.vertices());
-    RC_ASSERT(again.edges() == k.edges());
-    RC_ASSERT(again.triangles() == k.triangles());
-    RC_ASSERT(again.tetrahedra() == k.tetrahedra());
+    for (const unsigned threads : {1u, 2u}) {
+      const auto again = SimplicialComplex::from_closed_lists(explicit_lists, threads);
+      RC_ASSERT(again.is_valid());
+      RC_ASSERT(again.vertices() == k.vertices());
+      RC_ASSERT(again.edges() == k.edges());
+      RC_ASSERT(again.triangles() == k.triangles());
+      RC_ASSERT(again.tetrahedra() == k.tetrahedra());
+    }
   });
 }
