@@ -383,7 +383,8 @@ CellId Builder::locate_conflict(VertexId p, bool& conflict) {
 // the walk starts: the triangulation does not depend on it. Starting from an arbitrary
 // cell of the previous star, the walk first had to turn around the previous point: 10^6
 // uniform points took 5.6 walk steps per point, 3·10^5 points on a torus 37.7; from the
-// nearest centroid 1.2 and 22.3 (torus insertion 3.06 -> 2.51 s). The star's cells and
+// nearest centroid 1.2 and 22.3 (torus insertion 2.95 -> 2.64 s, medians of 5 interleaved
+// runs; uniform unchanged within the noise). The star's cells and
 // points were just written or tested, so the scan runs in cache.
 CellId Builder::nearest_star_cell(const Point3& q, CellId fallback) const {
   const auto& cells = t_.cells_;

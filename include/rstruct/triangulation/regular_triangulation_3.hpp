@@ -331,11 +331,15 @@ class RegularTriangulation3 {
   /// With `filter` (a box holding q and every point), its orient3d_two_stage is used.
   int orient_replaced(CellId c, int i, const Point3& q,
                       const predicates::AlmostStaticFilter* filter = nullptr) const;
-  /// Remembering stochastic walk from `start` (a live cell) to a cell whose closure contains
-  /// q; an infinite cell iff q is strictly outside the hull. `rng` is the caller's state.
+  /// Walk from `start` (a live cell) to a cell whose closure contains q; an infinite cell
+  /// iff q is strictly outside the hull. It follows the segment from the start cell's
+  /// centroid to q where it can, and otherwise takes the facets in a random order (`rng`
+  /// is the caller's state); every move is decided by exact orientations.
   CellId walk(const Point3& q, CellId start, std::uint64_t& rng, std::uint64_t& steps,
               std::uint64_t& orients,
               const predicates::AlmostStaticFilter* filter = nullptr) const;
+  /// The facet of finite cell c, other than the one shared with `previous`, that the line
+  /// through o with direction (wx, wy, wz) crosses, or −1 (floating point: a preference).
   int segment_exit_facet(CellId c, const Point3& o, double wx, double wy, double wz,
                          CellId previous) const;
   /// Some live cell, for walks without a usable hint.
