@@ -96,6 +96,10 @@ class Builder {
   }
   void link_star_hashed();
   void collect_hidden_vertices(VertexId p, VertexId duplicate_of);
+  /// The fast path of collect_hidden_vertices, called by build_star before the numbering
+  /// is cleared; false (nothing done) when the numbering was full.
+  bool collect_hidden_by_numbering(CellId hint);
+  bool hidden_collected_ = false;
   void release_conflict_region();
   CellId new_cell() {
     if (t_.free_head_ != kNoCell) [[likely]] {
