@@ -350,7 +350,8 @@ void Builder::insert(VertexId p) {
   }
   find_conflict_region(c, p);
   build_star(p);
-  collect_hidden_vertices(p, duplicate_of_);
+  collect_hidden_vertices(duplicate_of_);
+  for (const VertexId v : local_vertices_) vertex_local_[v] = 0;  // the boundary numbering
   release_conflict_region();
 }
 
@@ -522,14 +523,12 @@ void Builder::build_star(VertexId p) {
     }
     star_[s] = n;
   }
-  hidden_collected_ = weights_ != nullptr && collect_hidden_by_numbering(star_.front());
   link_star();
   last_ = star_.front();
   star_is_latest_ = true;
 }
 
 void Builder::link_star() {
-  for (const VertexId v : local_vertices_) vertex_local_[v] = 0;
   // With every number in use, a vertex may have gone unnumbered (0, like the infinite one).
   if (local_vertices_.size() == kLocal - 1) {
     ++t_.stats_.large_cavities;
@@ -590,34 +589,33 @@ void Builder::link_star_hashed() {
 }
 
 // Weighted: a vertex of the cavity on no boundary facet is in no new cell, so p hides it.
-// While the boundary's numbering is not full (local_number), the boundary vertices are
-// exactly the numbered ones, so the cavity's vertices are checked against the numbers,
-// which build_star has just written (the general method below marks every vertex of the
-// cavity and of the star in a per-point array: 9 % of the regular triangulation of a
-// double torus's 85,237 surface balls).
-bool Builder::collect_hidden_by_numbering(CellId hint) {
-  if (local_vertices_.size() == kLocal - 1) return false;
-  constexpr std::uint8_t kSeen = 0xFF;  // above every number
-  const std::size_t first = raw_hidden_.size();
-  for (const CellId x : conflict_) {
-    for (const VertexId v : t_.cells_[x].v) {
-      if (v != kInfiniteVertex && vertex_local_[v] == 0) {
-        vertex_local_[v] = kSeen;
-        raw_hidden_.push_back({v, hint});
-      }
-    }
-  }
-  for (std::size_t i = first; i < raw_hidden_.size(); ++i) vertex_local_[raw_hidden_[i].point] = 0;
-  return true;
-}
-
-void Builder::collect_hidden_vertices(VertexId p, VertexId duplicate_of) {
+// While the boundary's numbering (local_number, still set) is not full, the boundary
+// vertices are exactly the numbered ones: the cavity's vertices are checked against the
+// numbers. Otherwise every vertex of the cavity and of the star is marked in a per-point
+// array (that general method took 9 % of the regular triangulation of a double torus's
+// 85,237 surface balls).
+void Builder::collect_hidden_vertices(VertexId duplicate_of) {
   const auto& cells = t_.cells_;
   if (weights_ == nullptr) {
     if (duplicate_of != kInfiniteVertex) raw_hidden_.push_back({duplicate_of, last_});
     return;
   }
-  if (hidden_collected_) return;
+  if (local_vertices_.size() < kLocal - 1) {
+    constexpr std::uint8_t kSeen = 0xFF;  // above every number
+    const std::size_t first = raw_hidden_.size();
+    for (const CellId x : conflict_) {
+      for (const VertexId v : cells[x].v) {
+        if (v != kInfiniteVertex && vertex_local_[v] == 0) {
+          vertex_local_[v] = kSeen;
+          raw_hidden_.push_back({v, last_});
+        }
+      }
+    }
+    for (std::size_t i = first; i < raw_hidden_.size(); ++i) {
+      vertex_local_[raw_hidden_[i].point] = 0;
+    }
+    return;
+  }
   cavity_vertices_.clear();
   for (const CellId x : conflict_) {
     for (const VertexId v : cells[x].v) {
@@ -641,7 +639,6 @@ void Builder::collect_hidden_vertices(VertexId p, VertexId duplicate_of) {
       if (v != kInfiniteVertex) vertex_mark_[v] = 0;
     }
   }
-  (void)p;
 }
 
 void Builder::release_conflict_region() {

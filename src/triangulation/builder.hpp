@@ -95,11 +95,9 @@ class Builder {
     return vertex_local_[v];
   }
   void link_star_hashed();
-  void collect_hidden_vertices(VertexId p, VertexId duplicate_of);
-  /// The fast path of collect_hidden_vertices, called by build_star before the numbering
-  /// is cleared; false (nothing done) when the numbering was full.
-  bool collect_hidden_by_numbering(CellId hint);
-  bool hidden_collected_ = false;
+  /// The vertices p's insertion removed (reported with last_): a duplicate of p
+  /// (Delaunay) or the vertices p hides (weighted). Reads the boundary numbering.
+  void collect_hidden_vertices(VertexId duplicate_of);
   void release_conflict_region();
   CellId new_cell() {
     if (t_.free_head_ != kNoCell) [[likely]] {

@@ -178,6 +178,35 @@ TEST_CASE("the result does not depend on the insertion order") {
   });
 }
 
+TEST_CASE("a weighted cavity with hundreds of boundary vertices hides the vertices inside") {
+  // 300 weightless points on the unit sphere, 40 weightless points within 0.3 of its
+  // centre, then the centre with weight 0.36: its cavity is bounded by the sphere points
+  // (more than the boundary numbering holds, so the hidden vertices are found by the
+  // general method), and it hides every inner point (an inner point x's power cell would
+  // need y·x ≥ (|x|² + 0.36) / 2 beyond the sphere points' bisectors).
+  std::vector<Point3> p;
+  std::vector<double> w;
+  rstruct::test::Random r(7);
+  while (p.size() < 340) {
+    const Point3 q{r.uniform() * 2 - 1, r.uniform() * 2 - 1, r.uniform() * 2 - 1};
+    const double len = norm(q);
+    if (len < 0.1 || len > 1) continue;
+    p.push_back(p.size() < 300 ? q / len : q * (0.3 / len) * r.uniform());
+    w.push_back(0);
+  }
+  p.push_back({0, 0, 0});
+  w.push_back(0.36);
+  TriangulationOptions sequential;
+  sequential.spatial_sort = false;
+  for (const auto& options : {sequential, TriangulationOptions{}}) {
+    const RegularTriangulation3 t(p, w, options);
+    CHECK(t.is_valid().message == "");
+    CHECK(t.hidden_points().size() == 40);
+    CHECK(t.number_of_vertices() == 301);
+    if (!options.spatial_sort) CHECK(t.stats().large_cavities >= 1);
+  }
+}
+
 TEST_CASE("a cavity with hundreds of boundary vertices (the star is linked by hashing)") {
   // Points near a sphere, then its centre: every cell's circumsphere holds the centre, so
   // the last insertion's cavity is the whole triangulation.
