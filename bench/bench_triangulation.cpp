@@ -3,13 +3,15 @@
 // points (some hidden). Every case runs in a forked child so that its peak resident memory
 // is its own; each case runs --runs times and the medians are printed.
 //
-// Usage: bench_triangulation [--runs R] [--max N] [--huge] [--case NAME]
+// Usage: bench_triangulation [--runs R] [--max N] [--huge] [--case NAME] [--threads T]
 //   --max N   largest uniform size of the ladder (default 1e6); --huge adds 1e7.
+//   --threads T  insertion threads (default 1, the targets are single-thread).
 // Columns: case, points, vertices, finite cells, hidden+merged, sort s, insertion s,
 // total wall and CPU s, bytes per point (peak RSS minus RSS before the points were generated, so the
 // input points, which the triangulation owns, are included), walk steps and conflict
 // cells per point, and the share of predicate calls the filter could not decide (only in a
-// build with -Dcounters=true).
+// build with -Dcounters=true), and the share of points the parallel passes deferred to
+// the sequential one.
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -34,7 +36,7 @@ using rstruct::triangulation::RegularTriangulation3;
 
 struct Result {
   double points, vertices, cells, removed, sort_s, insert_s, total_s, cpu_s, bytes_per_point,
-      walk_per_point, conflict_per_point, filter_failure;
+      walk_per_point, conflict_per_point, filter_failure, deferred;
 };
 
 /// CPU seconds of this process: on a loaded machine the wall clock also counts the time
@@ -85,6 +87,8 @@ double filter_failure_rate() {
   return all == 0 ? 0.0 : static_cast<double>(slow) / static_cast<double>(all);
 }
 
+unsigned g_threads = 1;
+
 Result run_case(const std::string& name, std::size_t n, std::uint64_t seed) {
   const std::size_t before = rstruct::current_memory_bytes();
   std::vector<Point3> points = name == "torus" ? torus(n, seed) : uniform_cube(n, seed);
@@ -98,9 +102,11 @@ Result run_case(const std::string& name, std::size_t n, std::uint64_t seed) {
   rstruct::predicates::reset_stage_counts();
   const double cpu0 = cpu_seconds();
   rstruct::Stopwatch clock;
-  const RegularTriangulation3 t = weights.empty()
-                                      ? RegularTriangulation3(std::move(points))
-                                      : RegularTriangulation3(std::move(points), std::move(weights));
+  rstruct::triangulation::TriangulationOptions options;
+  options.threads = g_threads;
+  const RegularTriangulation3 t =
+      weights.empty() ? RegularTriangulation3(std::move(points), options)
+                      : RegularTriangulation3(std::move(points), std::move(weights), options);
   const double total = clock.seconds();
   const double cpu = cpu_seconds() - cpu0;
   const double peak = static_cast<double>(rstruct::peak_memory_bytes());
@@ -117,7 +123,8 @@ Result run_case(const std::string& name, std::size_t n, std::uint64_t seed) {
           (peak - static_cast<double>(before)) / dn,
           static_cast<double>(s.walk_steps) / dn,
           static_cast<double>(s.conflict_cells) / dn,
-          filter_failure_rate()};
+          filter_failure_rate(),
+          static_cast<double>(s.deferred_points) / dn};
 }
 
 // Runs one case in a child process; the result comes back through a pipe.
@@ -174,10 +181,11 @@ void bench(const std::string& name, std::size_t n, int runs) {
               med(&Result::conflict_per_point));
   const double f = med(&Result::filter_failure);
   if (f >= 0) {
-    std::printf(" %9.2e\n", f);
+    std::printf(" %9.2e", f);
   } else {
-    std::printf("       n/a\n");
+    std::printf("       n/a");
   }
+  std::printf(" %6.2f%%\n", 100 * med(&Result::deferred));
   std::fflush(stdout);
 }
 
@@ -198,15 +206,20 @@ int main(int argc, char** argv) {
       huge = true;
     } else if (a == "--case" && i + 1 < argc) {
       only = argv[++i];
+    } else if (a == "--threads" && i + 1 < argc) {
+      g_threads = static_cast<unsigned>(std::max(0, std::atoi(argv[++i])));
     } else {
-      std::fprintf(stderr, "usage: %s [--runs R] [--max N] [--huge] [--case NAME]\n", argv[0]);
+      std::fprintf(stderr,
+                   "usage: %s [--runs R] [--max N] [--huge] [--case NAME] [--threads T]\n",
+                   argv[0]);
       return 2;
     }
   }
-  std::printf("# medians of %d runs; the machine may be loaded by other jobs\n", runs);
-  std::printf("%-9s %10s %10s %11s %8s %7s %7s %7s %7s %7s %6s %6s %9s\n", "case", "points",
+  std::printf("# medians of %d runs, %u insertion thread(s); the machine may be loaded by other jobs\n",
+              runs, g_threads);
+  std::printf("%-9s %10s %10s %11s %8s %7s %7s %7s %7s %7s %6s %6s %9s %7s\n", "case", "points",
               "vertices", "fin.cells", "removed", "sort_s", "ins_s", "total_s", "cpu_s",
-              "B/pt", "walk", "confl", "filt.fail");
+              "B/pt", "walk", "confl", "filt.fail", "defer");
   const auto want = [&](const char* c) { return only.empty() || only == c; };
   if (want("uniform")) {
     for (double n = 1e4; n <= max * 1.0001; n *= 10) bench("uniform", std::size_t(n), runs);

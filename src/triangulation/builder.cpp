@@ -6,6 +6,8 @@
 #include <new>
 #include <numeric>
 #include <string>
+#include <thread>
+#include <exception>
 
 #include "rstruct/core/assert.hpp"
 #include "rstruct/core/error.hpp"
@@ -69,7 +71,30 @@ Builder::Builder(RegularTriangulation3& t, const TriangulationOptions& options)
       options_(options),
       points_(t.points_.data()),
       weights_(t.weights_.empty() ? nullptr : t.weights_.data()),
-      rng_(options.seed | 1u) {}
+      rng_(options.seed | 1u),
+      free_head_(&t.free_head_),
+      free_count_(&t.free_count_),
+      stats_(&t.stats_) {
+  const unsigned requested =
+      options.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : options.threads;
+  workers_ = std::min(requested, 8u);
+}
+
+Builder::Builder(const Builder& main, std::uint8_t worker)
+    : t_(main.t_),
+      options_(main.options_),
+      points_(main.points_),
+      weights_(main.weights_),
+      box_filter_(main.box_filter_),
+      reorder_(main.reorder_),
+      rng_((main.options_.seed ^ (0xD1B54A32D192ED03ull * worker)) | 1u),
+      free_head_(&own_free_head_),
+      free_count_(&own_free_count_),
+      stats_(&own_stats_),
+      worker_(worker) {
+  vertex_local_.assign(t_.points_.size(), 0);
+  if (weights_ != nullptr) vertex_mark_.assign(t_.points_.size(), 0);
+}
 
 void Builder::run() {
   const std::size_t n = t_.points_.size();
@@ -120,12 +145,32 @@ void Builder::run() {
   make_first_cells(first);
   t_.processed_ = 4;
   for (std::size_t k = 0; k < 4; ++k) after_insertion(vertex_at(k));
-  for (std::size_t k = 4; k < n; ++k) {
-    if (k == n / 64 || k == n / 8) reserve_for_projection(k, n, 1.3);
-    if (k == n / 2) reserve_for_projection(k, n, 1.1);
-    insert(vertex_at(k));
-    t_.processed_ = k + 1;
-    after_insertion(vertex_at(k));
+  if (reorder_ && workers_ > 1) {
+    // Rounds are the maximal stretches of non-decreasing Hilbert keys (a round may merge
+    // with the next: still one stretch along the curve).
+    keys_ = hilbert_keys(t_.points_);
+    owner_store_.assign(n, 0);
+    owner_ = owner_store_.data();
+    t_.stats_.threads = workers_;
+    for (std::size_t k = 4; k < n;) {
+      std::size_t end = k + 1;
+      while (end < n && keys_[end] >= keys_[end - 1]) ++end;
+      const std::size_t live = t_.cells_.size() - t_.free_count_;
+      if (end - k >= std::max<std::size_t>(options_.parallel_min_round, 64 * workers_)) {
+        insert_round_in_parallel(k, end);
+      } else {
+        insert_sequentially(k, end, n);
+      }
+      growth_rate_ = static_cast<double>(t_.cells_.size() - t_.free_count_ - live) /
+                     static_cast<double>(end - k);
+      k = end;
+    }
+    helpers_.clear();
+    keys_ = {};
+    owner_store_ = {};
+    owner_ = nullptr;
+  } else {
+    insert_sequentially(4, n, n);
   }
   marks_.clear();
   marks_.shrink_to_fit();
@@ -138,6 +183,296 @@ void Builder::run() {
   t_.order_.shrink_to_fit();
   t_.finalize(raw_hidden_);
   t_.stats_.insertion_seconds = clock.seconds();
+}
+
+void Builder::insert_sequentially(std::size_t begin, std::size_t end, std::size_t n) {
+  for (std::size_t k = begin; k < end; ++k) {
+    if (k == n / 64 || k == n / 8) reserve_for_projection(k, n, 1.3);
+    if (k == n / 2) reserve_for_projection(k, n, 1.1);
+    insert(vertex_at(k));
+    t_.processed_ = k + 1;
+    after_insertion(vertex_at(k));
+  }
+}
+
+// Parallel insertion of one BRIO round (after Marot, Pellerin & Remacle, "One machine, one
+// minute, three billion tetrahedra", 2019). The round, sorted along the Hilbert curve, is
+// cut into one stretch of the curve per worker; every vertex inserted so far (and every
+// point of the round) belongs to the worker whose stretch its key falls in. A worker
+// inserts a point only if the walk, every cell in conflict and therefore every new cell
+// have all four vertices its own; otherwise the point is deferred, unchanged, to a
+// sequential pass after the round. Why no locks are needed: a worker writes only cells
+// with four vertices of its own (cavity and new cells) and the neighbour link of a cell
+// across a facet with three of its own vertices; it reads only cells with at least three
+// vertices of its own (it steps from a cell of its own across a facet to the next). Two
+// workers never share three vertices of a cell, so no cell one of them writes is read or
+// written by another, and each worker's run depends only on cells nobody else touches:
+// the result (cell ids included) depends on the number of workers, not on timing. New
+// cells come from the worker's free list and then from a range of ids reserved for it.
+void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
+  auto& cells = t_.cells_;
+  const unsigned k = workers_;
+  std::array<std::uint32_t, 8> threshold{};
+  std::array<std::size_t, 9> first{};
+  first[0] = begin;
+  first[k] = end;
+  for (unsigned w = 1; w < k; ++w) {
+    threshold[w] = keys_[begin + (end - begin) * w / k];
+    first[w] = static_cast<std::size_t>(
+        std::lower_bound(keys_.begin() + static_cast<std::ptrdiff_t>(begin),
+                         keys_.begin() + static_cast<std::ptrdiff_t>(end), threshold[w]) -
+        keys_.begin());
+  }
+  for (std::size_t v = 0; v < end; ++v) {
+    std::uint8_t o = 0;
+    while (o + 1u < k && keys_[v] >= threshold[o + 1u]) ++o;
+    owner_store_[v] = o;
+  }
+  // Each worker's first point whose cell (found by a sequential walk) it owns: there its
+  // own walks start. The points before it are deferred.
+  std::array<CellId, 8> start{};
+  std::array<std::size_t, 8> from{};
+  CellId hint = t_.is_cell(last_) ? last_ : t_.any_cell();
+  for (unsigned w = 0; w < k; ++w) {
+    start[w] = kNoCell;
+    from[w] = first[w + 1];
+    for (std::size_t r = first[w]; r < first[w + 1] && r < first[w] + 64; ++r) {
+      hint = t_.walk(points_[vertex_at(r)], hint, rng_, stats_->walk_steps,
+                     stats_->orient_calls, &*box_filter_);
+      const Cell& c = cells[hint];
+      bool own = true;
+      for (const VertexId v : c.v) own = own && (v == kInfiniteVertex || owner_[v] == w);
+      if (own) {
+        start[w] = hint;
+        from[w] = r;
+        break;
+      }
+    }
+  }
+  // Room for the new cells: per point, the larger of the live cells per vertex so far and
+  // the growth over the previous stretch (points on a surface: the cells per point grow
+  // with n), with a margin, per worker.
+  const double per_point =
+      std::max(growth_rate_, static_cast<double>(cells.size() - t_.free_count_) /
+                                 static_cast<double>(begin));
+  std::array<std::size_t, 9> region{};
+  region[0] = cells.size();
+  for (unsigned w = 0; w < k; ++w) {
+    region[w + 1] = region[w] + 256 +
+                    static_cast<std::size_t>(1.25 * per_point *
+                                             static_cast<double>(first[w + 1] - first[w]));
+  }
+  if (region[k] >= kMaxCells) {
+    insert_sequentially(begin, end, t_.points_.size());
+    return;
+  }
+  if (region[k] > cells.capacity()) cells.reserve(region[k] + region[k] / 4);
+  cells.resize(region[k]);  // default-initialised: written by the workers (or freed below)
+  while (helpers_.size() + 1 < k) {
+    helpers_.push_back(std::make_unique<Builder>(*this, static_cast<std::uint8_t>(helpers_.size() + 1)));
+  }
+  const auto worker = [&](unsigned w) -> Builder& { return w == 0 ? *this : *helpers_[w - 1]; };
+  for (unsigned w = 0; w < k; ++w) {
+    Builder& b = worker(w);
+    b.marks_.resize(region[k] / 32 + 1, 0);
+    b.owner_ = owner_;
+    b.worker_ = static_cast<std::uint8_t>(w);
+    b.in_region_ = true;
+    b.region_next_ = static_cast<CellId>(region[w]);
+    b.region_end_ = static_cast<CellId>(region[w + 1]);
+    b.exhausted_ = false;
+    b.deferred_.clear();
+  }
+  {
+    std::array<std::exception_ptr, 8> errors{};
+    {
+      std::vector<std::jthread> threads;
+      for (unsigned w = 1; w < k; ++w) {
+        threads.emplace_back([&, w] {
+          try {
+            worker(w).run_worker(from[w], first[w + 1], start[w]);
+          } catch (...) {
+            errors[w] = std::current_exception();
+          }
+        });
+      }
+      try {
+        run_worker(from[0], first[1], start[0]);
+      } catch (...) {
+        errors[0] = std::current_exception();
+      }
+    }
+    for (const std::exception_ptr& e : errors) {
+      if (e) std::rethrow_exception(e);
+    }
+  }
+  // Unused ids of the regions join the free list; the last region's are cut off. The
+  // helpers' free lists, hidden points and counts join the triangulation's.
+  for (unsigned w = 0; w < k; ++w) {
+    Builder& b = worker(w);
+    b.in_region_ = false;
+    if (w + 1 < k) {
+      for (CellId c = b.region_next_; c < b.region_end_; ++c) {
+        cells[c].v[0] = RegularTriangulation3::kFreeMark;
+        cells[c].n[0] = t_.free_head_;
+        t_.free_head_ = c;
+      }
+      t_.free_count_ += b.region_end_ - b.region_next_;
+    } else {
+      cells.resize(b.region_next_);
+    }
+    if (w == 0) continue;
+    if (b.own_free_head_ != kNoCell) {
+      CellId tail = b.own_free_head_;
+      while (cells[tail].n[0] != kNoCell) tail = cells[tail].n[0];
+      cells[tail].n[0] = t_.free_head_;
+      t_.free_head_ = b.own_free_head_;
+      t_.free_count_ += b.own_free_count_;
+      b.own_free_head_ = kNoCell;
+      b.own_free_count_ = 0;
+    }
+    raw_hidden_.insert(raw_hidden_.end(), b.raw_hidden_.begin(), b.raw_hidden_.end());
+    b.raw_hidden_.clear();
+    TriangulationStats& s = t_.stats_;
+    s.walk_steps += b.own_stats_.walk_steps;
+    s.conflict_cells += b.own_stats_.conflict_cells;
+    s.orient_calls += b.own_stats_.orient_calls;
+    s.power_test_calls += b.own_stats_.power_test_calls;
+    s.large_cavities += b.own_stats_.large_cavities;
+    b.own_stats_ = {};
+  }
+  // The deferred points, in rank order (each worker's are increasing, the stretches
+  // consecutive), inserted one by one.
+  std::size_t deferred = 0;
+  for (unsigned w = 0; w < k; ++w) {
+    for (std::size_t r = first[w]; r < from[w]; ++r) {
+      insert(vertex_at(r));
+      ++deferred;
+    }
+    for (const VertexId p : worker(w).deferred_) {
+      insert(p);
+      ++deferred;
+    }
+  }
+  t_.stats_.parallel_points += end - begin;
+  t_.stats_.deferred_points += deferred;
+  t_.processed_ = end;
+}
+
+void Builder::run_worker(std::size_t begin, std::size_t end, CellId start) {
+  last_ = start;
+  star_is_latest_ = false;
+  for (std::size_t r = begin; r < end; ++r) {
+    const VertexId p = vertex_at(r);
+    if (exhausted_ || !insert_owned(p)) deferred_.push_back(p);
+  }
+}
+
+bool Builder::insert_owned(VertexId p) {
+  if (!owned(p)) return false;
+  duplicate_of_ = kInfiniteVertex;
+  CellId c = star_is_latest_ ? nearest_star_cell(points_[p], last_) : last_;
+  ++stats_->power_test_calls;
+  if (!in_conflict(c, p)) {
+    bool blocked = false;
+    const CellId start = c;
+    c = walk_owned(points_[p], start, blocked);
+    if (blocked) return false;
+    ++stats_->power_test_calls;
+    if (c == start || !in_conflict(c, p)) {
+      raw_hidden_.push_back({p, c});
+      last_ = c;
+      star_is_latest_ = false;
+      return true;
+    }
+  }
+  const bool complete = weights_ == nullptr ? find_conflict_region_impl<false, true>(c, p)
+                                            : find_conflict_region_impl<true, true>(c, p);
+  if (!complete) {
+    clear_conflict_marks();
+    return false;
+  }
+  if (boundary_.size() > *free_count_ + (region_end_ - region_next_)) {
+    clear_conflict_marks();
+    exhausted_ = true;
+    return false;
+  }
+  build_star(p);
+  collect_hidden_vertices(duplicate_of_);
+  for (const VertexId v : local_vertices_) vertex_local_[v] = 0;
+  release_conflict_region();
+  return true;
+}
+
+void Builder::clear_conflict_marks() {
+  for (const CellId x : conflict_) set_mark(x, kNone);
+  for (const CellId y : outside_) set_mark(y, kNone);
+}
+
+// RegularTriangulation3::walk restricted to the worker's cells: it starts in one and stops
+// (blocked) before stepping into a cell with a vertex of another worker (or the infinite
+// vertex), so it never reads a cell another worker may be changing. Same moves otherwise:
+// the segment from the start cell's centroid first, then the facets in random order, each
+// move decided by an exact orientation.
+CellId Builder::walk_owned(const Point3& q, CellId start, bool& blocked) {
+  const auto& cells = t_.cells_;
+  CellId c = start;
+  CellId previous = kNoCell;
+  bool follow_segment = t_.infinite_index(c) < 0;
+  Point3 o{0, 0, 0};
+  if (follow_segment) {
+    for (const VertexId v : cells[c].v) {
+      o.x += 0.25 * points_[v].x;
+      o.y += 0.25 * points_[v].y;
+      o.z += 0.25 * points_[v].z;
+    }
+  }
+  const double wx = q.x - o.x, wy = q.y - o.y, wz = q.z - o.z;
+  constexpr std::size_t kLimit = 1 << 16;  // a pathological walk is left to the sequential pass
+  for (std::size_t step = 0; step < kLimit; ++step) {
+    ++stats_->walk_steps;
+    std::uint32_t link = 0;
+    const int inf = t_.infinite_index(c);
+    if (inf >= 0) {
+      link = cells[c].n[inf];
+      if (previous == (link >> 2)) return c;
+      ++stats_->orient_calls;
+      if (t_.orient_replaced(c, inf, q, &*box_filter_) > 0) return c;
+      follow_segment = false;
+    } else {
+      for (int i = 0; i < 4; ++i) __builtin_prefetch(&cells[cells[c].n[i] >> 2]);
+      int next = -1;
+      if (follow_segment) {
+        const int exit = t_.segment_exit_facet(c, o, wx, wy, wz, previous);
+        if (exit >= 0) {
+          ++stats_->orient_calls;
+          if (t_.orient_replaced(c, exit, q, &*box_filter_) < 0) next = exit;
+        }
+      }
+      if (next < 0) {
+        rng_ ^= rng_ << 13;
+        rng_ ^= rng_ >> 7;
+        rng_ ^= rng_ << 17;
+        const int r = static_cast<int>(rng_ & 3u);
+        for (int t = 0; t < 4 && next < 0; ++t) {
+          const int i = (r + t) & 3;
+          if ((cells[c].n[i] >> 2) == previous) continue;
+          ++stats_->orient_calls;
+          if (t_.orient_replaced(c, i, q, &*box_filter_) < 0) next = i;
+        }
+      }
+      if (next < 0) return c;
+      link = cells[c].n[next];
+    }
+    if (!owned(cells[link >> 2].v[link & 3u])) {
+      blocked = true;
+      return c;
+    }
+    previous = c;
+    c = link >> 2;
+  }
+  blocked = true;
+  return c;
 }
 
 // Points on a surface have Theta(n log n) Delaunay cells (cylinder-like pieces: Devillers,
@@ -365,7 +700,7 @@ void Builder::insert(VertexId p) {
 // conflict cell met early can be a long thin cell far from p, and the next walk, started
 // from the new cells next to it, gets long.)
 CellId Builder::locate_conflict(VertexId p, bool& conflict) {
-  auto& stats = t_.stats_;
+  auto& stats = *stats_;
   CellId start = t_.is_cell(last_) ? last_ : t_.any_cell();
   if (star_is_latest_) start = nearest_star_cell(points_[p], start);
   ++stats.power_test_calls;
@@ -414,14 +749,14 @@ CellId Builder::nearest_star_cell(const Point3& q, CellId fallback) const {
 
 void Builder::find_conflict_region(CellId start, VertexId p) {
   if (weights_ == nullptr) {
-    find_conflict_region_impl<false>(start, p);
+    find_conflict_region_impl<false, false>(start, p);
   } else {
-    find_conflict_region_impl<true>(start, p);
+    find_conflict_region_impl<true, false>(start, p);
   }
 }
 
-template <bool kWeighted>
-void Builder::find_conflict_region_impl(CellId start, VertexId p) {
+template <bool kWeighted, bool kOwned>
+bool Builder::find_conflict_region_impl(CellId start, VertexId p) {
   auto& cells = t_.cells_;
   const auto prefetch_neighbors = [&](CellId c) {
     for (int i = 0; i < 4; ++i) __builtin_prefetch(&cells[cells[c].n[i] >> 2]);
@@ -468,6 +803,14 @@ void Builder::find_conflict_region_impl(CellId start, VertexId p) {
       const CellId y = k.n[i] >> 2;
       const bool conflict = f[j] != pr::detail::kUndecided ? f[j] > 0 : in_conflict_general(y, p);
       if (conflict) {
+        if constexpr (kOwned) {
+          // y shares three of the worker's vertices with x: is the fourth its own too?
+          if (!owned(cells[y].v[k.n[i] & 3u])) {
+            set_mark(y, kOutside);  // marked, so that clear_conflict_marks() clears it
+            outside_.push_back(y);
+            return false;
+          }
+        }
         set_mark(y, kConflict);
         conflict_.push_back(y);
         prefetch_neighbors(y);
@@ -478,9 +821,10 @@ void Builder::find_conflict_region_impl(CellId start, VertexId p) {
       boundary_.push_back({x, i});
     }
   }
-  t_.stats_.conflict_cells += conflict_.size();
+  stats_->conflict_cells += conflict_.size();
   // Every cell tested but the start (tested by insert()) is in conflict_ or outside_.
-  t_.stats_.power_test_calls += conflict_.size() - 1 + outside_.size();
+  stats_->power_test_calls += conflict_.size() - 1 + outside_.size();
+  return true;
 }
 
 // One new cell per boundary facet (the facet joined to p), linked to the cell outside the
@@ -531,7 +875,7 @@ void Builder::build_star(VertexId p) {
 void Builder::link_star() {
   // With every number in use, a vertex may have gone unnumbered (0, like the infinite one).
   if (local_vertices_.size() == kLocal - 1) {
-    ++t_.stats_.large_cavities;
+    ++stats_->large_cavities;
     link_star_hashed();
     return;
   }
@@ -645,11 +989,11 @@ void Builder::release_conflict_region() {
   auto& cells = t_.cells_;
   for (const CellId x : conflict_) {
     cells[x].v[0] = RegularTriangulation3::kFreeMark;
-    cells[x].n[0] = t_.free_head_;
-    t_.free_head_ = x;
+    cells[x].n[0] = *free_head_;
+    *free_head_ = x;
     set_mark(x, kNone);
   }
-  t_.free_count_ += conflict_.size();
+  *free_count_ += conflict_.size();
   for (const CellId y : outside_) set_mark(y, kNone);
 }
 

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -15,6 +16,9 @@ namespace rstruct::triangulation {
 class Builder {
  public:
   Builder(RegularTriangulation3& t, const TriangulationOptions& options);
+  /// A helper thread's builder for the parallel passes of `main`: its own search state,
+  /// marks, free list and statistics over main's triangulation.
+  Builder(const Builder& main, std::uint8_t worker);
   /// Sorts, builds the first tetrahedron, inserts every other point, finalizes.
   /// \throws InvalidInput when the points do not span R³.
   void run();
@@ -39,6 +43,26 @@ class Builder {
   std::uint32_t input_id(VertexId v) const { return reorder_ ? t_.order_[v] : v; }
   void make_first_cells(const VertexId (&v)[4]);
   void insert(VertexId p);
+  /// Inserts ranks [begin, end) sequentially (reserving as the construction grows).
+  void insert_sequentially(std::size_t begin, std::size_t end, std::size_t n);
+  /// Inserts the BRIO round of ranks [begin, end) with the helpers (parallel passes).
+  void insert_round_in_parallel(std::size_t begin, std::size_t end);
+  /// Parallel pass of one worker: inserts p if everything it touches is owned by this
+  /// worker; false (nothing changed) otherwise.
+  bool insert_owned(VertexId p);
+  /// The worker's points [begin, end), those it cannot insert appended to deferred_.
+  void run_worker(std::size_t begin, std::size_t end, CellId start);
+  /// Walk through owned cells only (see walk()); `blocked` when the next cell is not owned.
+  CellId walk_owned(const Point3& q, CellId start, bool& blocked);
+  /// The infinite vertex counts as every worker's: two workers still never share three
+  /// vertices of a cell (see insert_round_in_parallel).
+  bool owned(VertexId v) const { return v == kInfiniteVertex || owner_[v] == worker_; }
+  bool fully_owned(CellId c) const {
+    const Cell& k = t_.cells_[c];
+    return owned(k.v[0]) && owned(k.v[1]) && owned(k.v[2]) && owned(k.v[3]);
+  }
+  /// Clears the marks of an abandoned conflict search.
+  void clear_conflict_marks();
   CellId locate_conflict(VertexId p, bool& conflict);
   /// The finite cell of star_ whose centroid is nearest to q (fallback if none).
   CellId nearest_star_cell(const Point3& q, CellId fallback) const;
@@ -80,8 +104,9 @@ class Builder {
   }
   bool in_conflict_general(CellId c, VertexId p);
   void find_conflict_region(CellId start, VertexId p);
-  template <bool kWeighted>
-  void find_conflict_region_impl(CellId start, VertexId p);
+  /// kOwned: returns false as soon as a cell in conflict is not owned (parallel pass).
+  template <bool kWeighted, bool kOwned>
+  bool find_conflict_region_impl(CellId start, VertexId p);
   void build_star(VertexId p);
   void link_star();
   /// Number of boundary vertex v (1..kLocal-1; the infinite vertex is 0), or 0 when the
@@ -100,12 +125,13 @@ class Builder {
   void collect_hidden_vertices(VertexId duplicate_of);
   void release_conflict_region();
   CellId new_cell() {
-    if (t_.free_head_ != kNoCell) [[likely]] {
-      const CellId c = t_.free_head_;
-      t_.free_head_ = t_.cells_[c].n[0];
-      --t_.free_count_;
+    if (*free_head_ != kNoCell) [[likely]] {
+      const CellId c = *free_head_;
+      *free_head_ = t_.cells_[c].n[0];
+      --*free_count_;
       return c;
     }
+    if (in_region_) return region_next_++;  // room checked before the star is built
     return append_cell();
   }
   CellId append_cell();
@@ -164,6 +190,28 @@ class Builder {
   VertexId duplicate_of_ = kInfiniteVertex;
   bool reorder_ = false;
   std::uint64_t rng_;
+
+  // Free list and statistics: the triangulation's, or a helper's own during a pass.
+  CellId* free_head_;
+  std::size_t* free_count_;
+  TriangulationStats* stats_;
+  CellId own_free_head_ = kNoCell;
+  std::size_t own_free_count_ = 0;
+  TriangulationStats own_stats_;
+
+  // Parallel passes (see insert_round_in_parallel).
+  unsigned workers_ = 1;
+  std::vector<std::uint32_t> keys_;        // per rank: Hilbert key (main builder only)
+  std::vector<std::uint8_t> owner_store_;  // per rank: owning worker (main builder only)
+  const std::uint8_t* owner_ = nullptr;    // main's owner_store_
+  std::uint8_t worker_ = 0;
+  bool in_region_ = false;                 // new cells come from [region_next_, region_end_)
+  CellId region_next_ = 0;
+  CellId region_end_ = 0;
+  bool exhausted_ = false;                 // the region ran out during this pass
+  double growth_rate_ = 0;                 // live cells per point over the last stretch
+  std::vector<VertexId> deferred_;
+  std::vector<std::unique_ptr<Builder>> helpers_;
 };
 
 }  // namespace rstruct::triangulation

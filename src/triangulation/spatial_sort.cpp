@@ -127,6 +127,15 @@ std::vector<std::uint32_t> hilbert_order(std::span<const Point3> points) {
   return order;
 }
 
+std::vector<std::uint32_t> hilbert_keys(std::span<const Point3> points) {
+  const HilbertKeyer keyer(points, kSortBits);
+  std::vector<std::uint32_t> keys(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    keys[i] = static_cast<std::uint32_t>(keyer.key(points[i]) >> (3 * kSortBits - 32));
+  }
+  return keys;
+}
+
 std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint64_t seed,
                                       std::uint32_t ratio_divisor, std::size_t min_round) {
   const std::size_t n = points.size();

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <new>
+#include <utility>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -44,6 +45,18 @@ class HugePageAllocator {
     } else {
       std::free(p);
     }
+  }
+
+  /// Default-initialises: resize() leaves new elements of a trivial T unwritten, so
+  /// growing the array touches no page (the parallel triangulation sizes its cell array
+  /// before its threads fill it).
+  template <class U>
+  void construct(U* p) noexcept(noexcept(::new(static_cast<void*>(p)) U)) {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
 
   template <class U>

@@ -114,6 +114,15 @@ struct TriangulationOptions {
   /// Called after each input point has been processed (inserted, hidden or merged) with
   /// the id of that point. Tests use it to call is_valid() after every insertion.
   std::function<void(const class RegularTriangulation3&, VertexId)> after_insertion;
+  /// Threads inserting points (0: hardware concurrency; at most 8 are used). With more
+  /// than one, every BRIO round of at least `parallel_min_round` points is split along the
+  /// Hilbert curve into one stretch per thread; a thread inserts a point only if every cell
+  /// it visits has all its vertices in its stretch of the curve (cells it alone can change),
+  /// and leaves the others to a sequential pass (see builder.cpp). The triangulation is the
+  /// same (it is unique); cell ids depend on the number of threads, not on timing. Ignored
+  /// with after_insertion or without spatial_sort.
+  unsigned threads = 1;
+  std::size_t parallel_min_round = 20000;
 };
 
 /// Counts and seconds of the construction.
@@ -125,6 +134,9 @@ struct TriangulationStats {
   std::uint64_t orient_calls = 0;        ///< orient3d calls of the walk
   std::uint64_t power_test_calls = 0;    ///< insphere / power tests of the conflict search
   std::uint64_t large_cavities = 0;      ///< cavities with more than 127 boundary vertices (hashed linking)
+  unsigned threads = 1;                  ///< threads that inserted points
+  std::uint64_t parallel_points = 0;     ///< points processed by the parallel passes
+  std::uint64_t deferred_points = 0;     ///< points the parallel passes left to the sequential one
 };
 
 /// The result of is_valid(): ok, or the first violated property in words.
