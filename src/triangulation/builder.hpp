@@ -50,8 +50,11 @@ class Builder {
   /// Parallel pass of one worker: inserts p if everything it touches is owned by this
   /// worker; false (nothing changed) otherwise.
   bool insert_owned(VertexId p);
-  /// The worker's points [begin, end), those it cannot insert appended to deferred_.
-  void run_worker(std::size_t begin, std::size_t end, CellId start);
+  /// One parallel pass over lists[w] for worker w; returns the deferred points, sorted.
+  std::vector<VertexId> parallel_pass(const std::array<std::vector<VertexId>, 8>& lists,
+                                      std::size_t count);
+  /// The worker's points list[from..], those it cannot insert appended to deferred_.
+  void run_worker(const std::vector<VertexId>& list, std::size_t from, CellId start);
   /// Walk through owned cells only (see walk()); `blocked` when the next cell is not owned.
   CellId walk_owned(const Point3& q, CellId start, bool& blocked);
   /// The infinite vertex counts as every worker's: two workers still never share three
@@ -209,6 +212,7 @@ class Builder {
   CellId region_next_ = 0;
   CellId region_end_ = 0;
   bool exhausted_ = false;                 // the region ran out during this pass
+  bool parallel_futile_ = false;           // a pass deferred too much: sequential from now
   double growth_rate_ = 0;                 // live cells per point over the last stretch
   std::vector<VertexId> deferred_;
   std::vector<std::unique_ptr<Builder>> helpers_;

@@ -57,12 +57,12 @@ void check_same(const Input& in, unsigned threads, std::size_t min_round, bool b
   CHECK(duplicate_pairs(many) == duplicate_pairs(one));
   const auto& s = many.stats();
   CHECK(s.threads == std::min(threads, 8u));
+  CHECK(s.parallel_points > 0);
   if (busy) {
-    // The passes took most of the points and inserted a third of those themselves at least
-    // (40,000 uniform points, three workers: 34 % deferred; 30,000 points on a torus, two
-    // workers: 55 %: the long cells of surface samples cross the workers' borders).
+    // The passes took most of the points and inserted two thirds of those themselves at
+    // least (40,000 uniform points, three workers: 6 % deferred after both passes).
     CHECK(s.parallel_points > in.points.size() / 2);
-    CHECK(s.deferred_points * 3 < s.parallel_points * 2);
+    CHECK(s.deferred_points * 3 < s.parallel_points);
   }
 }
 
@@ -91,7 +91,9 @@ TEST_CASE("parallel insertion: a grid (cospherical everywhere)") {
 }
 
 TEST_CASE("parallel insertion: points on a torus surface") {
-  check_same({torus_points(30000, 5), {}}, 2, 2000, true);
+  // Long cells cross the workers' borders: the construction turns sequential after the
+  // first pass (see builder.cpp), which must still be right.
+  check_same({torus_points(30000, 5), {}}, 2, 2000, false);
 }
 
 TEST_CASE("parallel insertion: weighted points, some hidden") {

@@ -122,7 +122,7 @@ struct TriangulationOptions {
   /// same (it is unique); cell ids depend on the number of threads, not on timing. Ignored
   /// with after_insertion or without spatial_sort.
   unsigned threads = 1;
-  std::size_t parallel_min_round = 20000;
+  std::size_t parallel_min_round = 10000;
 };
 
 /// Counts and seconds of the construction.
