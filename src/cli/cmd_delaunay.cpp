@@ -45,6 +45,12 @@ class DelaunayCommand : public Command {
                  "property `weight` or `radius` (radius r means weight r^2)");
     app.add_option("--format", format_, "Input format (ply, off, obj, xyz) instead of the "
                                         "input's extension");
+    app.add_option("--threads", threads_,
+                   "Insertion threads (0: all cores). The tetrahedra are the same for any "
+                   "count; their order in the .ele file depends on it. Points in a volume "
+                   "gain (10^6 uniform: 1.6x on 2 cores); points on a surface fall back to "
+                   "one thread")
+        ->capture_default_str();
   }
 
   int run(Context& context) override {
@@ -67,10 +73,11 @@ class DelaunayCommand : public Command {
     std::vector<double> weights = weighted_ ? take_weights(mesh) : std::vector<double>{};
     const std::size_t n = mesh.vertices.size();
 
-    const RegularTriangulation3 t = weighted_
-                                        ? RegularTriangulation3(std::move(mesh.vertices),
-                                                                std::move(weights))
-                                        : RegularTriangulation3(std::move(mesh.vertices));
+    triangulation::TriangulationOptions options;
+    options.threads = threads_;
+    const RegularTriangulation3 t =
+        weighted_ ? RegularTriangulation3(std::move(mesh.vertices), std::move(weights), options)
+                  : RegularTriangulation3(std::move(mesh.vertices), options);
     context.report.add_stage("sort", t.stats().sort_seconds);
     context.report.add_stage("insertion", t.stats().insertion_seconds);
 
@@ -91,6 +98,9 @@ class DelaunayCommand : public Command {
     data["finite_cells"] = t.number_of_finite_cells();
     data["sort_seconds"] = t.stats().sort_seconds;
     data["insertion_seconds"] = t.stats().insertion_seconds;
+    data["threads"] = t.stats().threads;
+    data["parallel_points"] = t.stats().parallel_points;
+    data["deferred_points"] = t.stats().deferred_points;
     data["peak_memory_bytes"] = peak_memory_bytes();
     context.info(std::to_string(n) + " points: " + std::to_string(t.number_of_vertices()) +
                  " vertices, " + std::to_string(t.hidden_points().size()) + " hidden, " +
@@ -157,6 +167,7 @@ class DelaunayCommand : public Command {
   std::string input_;
   std::string output_;
   std::string format_;
+  unsigned threads_ = 0;
   bool weighted_ = false;
 };
 
