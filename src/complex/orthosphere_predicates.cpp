@@ -21,6 +21,22 @@ using detail::RoundedLeafNumber;
 std::atomic<std::uint64_t> g_filtered{0};
 std::atomic<std::uint64_t> g_exact{0};
 
+/// Each thread counts in its own counters, added to the totals when the thread ends (the
+/// pipeline's workers end before their caller reads the totals) or when its owner reads
+/// or resets them. One shared atomic counter incremented for every test made the
+/// threads of the dual complex take turns on its cache line.
+struct ThreadCounts {
+  std::uint64_t filtered = 0;
+  std::uint64_t exact = 0;
+  void flush() {
+    if (filtered != 0) g_filtered.fetch_add(filtered, std::memory_order_relaxed);
+    if (exact != 0) g_exact.fetch_add(exact, std::memory_order_relaxed);
+    filtered = exact = 0;
+  }
+  ~ThreadCounts() { flush(); }
+};
+thread_local ThreadCounts t_counts;
+
 template <class N>
 using V3 = std::array<N, 3>;
 
@@ -224,7 +240,7 @@ Sign orthosphere_power_sign(std::span<const WeightedPoint> sigma) {
                    : sigma.size() == 3 ? fast_power_sign<2>(sigma)
                                        : fast_power_sign<1>(sigma);
   if (fast != 2) {
-    g_filtered.fetch_add(1, std::memory_order_relaxed);
+    ++t_counts.filtered;
     return static_cast<Sign>(fast);
   }
   const OrthoSystem<FilteredNumber> s(sigma);
@@ -232,11 +248,11 @@ Sign orthosphere_power_sign(std::span<const WeightedPoint> sigma) {
   if (nondegenerate == 1 || nondegenerate == -1) {
     const int sign = s.power().certified_sign();
     if (sign != 2) {
-      g_filtered.fetch_add(1, std::memory_order_relaxed);
+      ++t_counts.filtered;
       return static_cast<Sign>(sign);
     }
   }
-  g_exact.fetch_add(1, std::memory_order_relaxed);
+  ++t_counts.exact;
   return orthosphere_power_sign_exact(sigma);
 }
 
@@ -248,26 +264,26 @@ Sign orthosphere_attachment_sign(std::span<const WeightedPoint> sigma, const Wei
     int sign = fast.safe_leaves ? fast.b[0].certified_sign() : 2;
     if (sign == 2) sign = OrthoSystem<FilteredNumber>(pair).b[0].certified_sign();
     if (sign != 2) {
-      g_filtered.fetch_add(1, std::memory_order_relaxed);
+      ++t_counts.filtered;
       return static_cast<Sign>(sign);
     }
   } else {
     const int fast = sigma.size() == 3 ? fast_attachment_sign<2>(sigma, p)
                                        : fast_attachment_sign<1>(sigma, p);
     if (fast != 2) {
-      g_filtered.fetch_add(1, std::memory_order_relaxed);
+      ++t_counts.filtered;
       return static_cast<Sign>(fast);
     }
     const OrthoSystem<FilteredNumber> s(sigma);
     if (s.degeneracy().certified_sign() == 1) {
       const int sign = s.attachment(p).certified_sign();
       if (sign != 2) {
-        g_filtered.fetch_add(1, std::memory_order_relaxed);
+        ++t_counts.filtered;
         return static_cast<Sign>(sign);
       }
     }
   }
-  g_exact.fetch_add(1, std::memory_order_relaxed);
+  ++t_counts.exact;
   return orthosphere_attachment_sign_exact(sigma, p);
 }
 
@@ -323,8 +339,8 @@ bool unattached_in_union(std::span<const WeightedPoint> sigma,
     }
     if (sign == -1) result = false;
   }
-  g_filtered.fetch_add(filtered, std::memory_order_relaxed);
-  if (exact != 0) g_exact.fetch_add(exact, std::memory_order_relaxed);
+  t_counts.filtered += filtered;
+  t_counts.exact += exact;
   return result;
 }
 
@@ -345,10 +361,12 @@ bool orthosphere_is_unattached_in_union(std::span<const WeightedPoint> sigma,
 }
 
 OrthospherePredicateCounters orthosphere_predicate_counters() {
+  t_counts.flush();
   return {g_filtered.load(std::memory_order_relaxed), g_exact.load(std::memory_order_relaxed)};
 }
 
 void reset_orthosphere_predicate_counters() {
+  t_counts = ThreadCounts{};
   g_filtered.store(0, std::memory_order_relaxed);
   g_exact.store(0, std::memory_order_relaxed);
 }
