@@ -497,25 +497,22 @@ CellId Builder::walk_owned(const Point3& q, CellId start, bool& blocked) {
       for (int i = 0; i < 4; ++i) __builtin_prefetch(&cells[cells[c].n[i] >> 2]);
       // Any facet q is strictly beyond is a valid move (the walk still terminates), so a
       // facet into a cell of another worker is skipped while another one remains.
-      const auto leads_to_own = [&](int i) {
-        const std::uint32_t l = cells[c].n[i];
-        return owned(cells[l >> 2].v[l & 3u]);
-      };
       int next = -1;
       bool beyond_foreign = false;
+      const auto try_facet = [&](int i) {
+        ++stats_->orient_calls;
+        if (t_.orient_replaced(c, i, q, &*box_filter_) >= 0) return;
+        const std::uint32_t l = cells[c].n[i];
+        if (owned(cells[l >> 2].v[l & 3u])) {
+          next = i;
+        } else {
+          beyond_foreign = true;
+        }
+      };
       int exit = -1;
       if (follow_segment) {
         exit = t_.segment_exit_facet(c, o, wx, wy, wz, previous);
-        if (exit >= 0) {
-          ++stats_->orient_calls;
-          if (t_.orient_replaced(c, exit, q, &*box_filter_) < 0) {
-            if (leads_to_own(exit)) {
-              next = exit;
-            } else {
-              beyond_foreign = true;
-            }
-          }
-        }
+        if (exit >= 0) try_facet(exit);
       }
       if (next < 0) {
         rng_ ^= rng_ << 13;
@@ -524,15 +521,7 @@ CellId Builder::walk_owned(const Point3& q, CellId start, bool& blocked) {
         const int r = static_cast<int>(rng_ & 3u);
         for (int t = 0; t < 4 && next < 0; ++t) {
           const int i = (r + t) & 3;
-          if (i == exit || (cells[c].n[i] >> 2) == previous) continue;
-          ++stats_->orient_calls;
-          if (t_.orient_replaced(c, i, q, &*box_filter_) < 0) {
-            if (leads_to_own(i)) {
-              next = i;
-            } else {
-              beyond_foreign = true;
-            }
-          }
+          if (i != exit && (cells[c].n[i] >> 2) != previous) try_facet(i);
         }
       }
       if (next < 0) {
