@@ -6,8 +6,18 @@
 
 namespace rstruct::triangulation {
 
-VertexStars::VertexStars(const RegularTriangulation3& rt, unsigned threads) {
+VertexStars::VertexStars(const RegularTriangulation3& rt, unsigned threads,
+                         std::size_t cells_per_thread) {
   const std::size_t n = rt.number_of_points();
+  // Stars: the cells are counted per vertex, then written in increasing id order (every
+  // star ends up sorted). The writes land all over the array: with several threads each
+  // writes the stars of one range of vertices (a range of the array) and reads every cell.
+  // Threads splitting the cells instead wrote into the same stars, side by side, and the
+  // cache lines went back and forth: no faster than one thread. Reading every cell twice
+  // pays from about 4·2^20 cells per thread on (the default cells_per_thread): stars of
+  // 10^6 samples on a torus, 2·10^7 cells, 3.58 -> 2.80 s; of 3·10^5 samples 0.74-0.81 ->
+  // 0.67-0.71 s; of the double torus's 1.5·10^6 cells 0.093-0.101 -> 0.101-0.109 s.
+  const std::size_t cap = rt.cell_capacity();
   cell_offsets_.assign(n + 1, 0);
   rt.for_each_cell([&](CellId c) {
     for (int i = 0; i < 4; ++i) {
@@ -19,10 +29,15 @@ VertexStars::VertexStars(const RegularTriangulation3& rt, unsigned threads) {
   cells_.resize(cell_offsets_[n]);
   {
     std::vector<std::size_t> fill(cell_offsets_.begin(), cell_offsets_.end() - 1);
-    rt.for_each_cell([&](CellId c) {  // increasing ids: every star ends up sorted
-      for (int i = 0; i < 4; ++i) {
-        const VertexId v = rt.vertex(c, i);
-        if (v != kInfiniteVertex) cells_[fill[v]++] = c;
+    const unsigned pieces = thread_count(threads, cap, cells_per_thread);
+    const std::size_t piece = (n + pieces - 1) / pieces;
+    parallel_chunks(n, pieces, piece, [&](std::size_t first, std::size_t last, unsigned) {
+      for (CellId c = 0; c < cap; ++c) {
+        if (!rt.is_cell(c)) continue;
+        for (int i = 0; i < 4; ++i) {
+          const VertexId v = rt.vertex(c, i);
+          if (v >= first && v < last && v != kInfiniteVertex) cells_[fill[v]++] = c;
+        }
       }
     });
   }

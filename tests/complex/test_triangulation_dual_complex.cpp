@@ -59,7 +59,10 @@ std::vector<double> random_weights(std::size_t n, int scale) {
 TEST_CASE("vertex stars list each vertex's cells and neighbours") {
   const std::vector<Point3> grid = testing::integer_grid(4);
   const RegularTriangulation3 rt(grid);
-  const VertexStars stars(rt, 2);
+  // One thread, and three filling the stars of a range of vertices each (on this small
+  // triangulation only when told to split from one cell per thread on).
+  const unsigned threads = GENERATE(1u, 3u);
+  const VertexStars stars(rt, threads, 1);
   std::size_t edge_ends = 0;
   for (triangulation::VertexId v = 0; v < grid.size(); ++v) {
     auto expected = rt.incident_cells(v);

@@ -13,6 +13,7 @@
 #include <span>
 #include <vector>
 
+#include "rstruct/core/huge_page_allocator.hpp"
 #include "rstruct/triangulation/regular_triangulation_3.hpp"
 
 namespace rstruct::triangulation {
@@ -20,8 +21,11 @@ namespace rstruct::triangulation {
 class VertexStars {
  public:
   /// Stars and neighbour lists of every vertex of `rt` (`threads` 0: hardware concurrency).
-  /// Input points that are not vertices (hidden, merged) get empty lists.
-  explicit VertexStars(const RegularTriangulation3& rt, unsigned threads = 0);
+  /// Input points that are not vertices (hidden, merged) get empty lists. The stars are
+  /// filled by one thread per `cells_per_thread` cells at the most (each thread reads all
+  /// cells; see vertex_stars.cpp); the result does not depend on it.
+  explicit VertexStars(const RegularTriangulation3& rt, unsigned threads = 0,
+                       std::size_t cells_per_thread = std::size_t{4} << 20);
 
   /// Number of input points of the triangulation (the valid arguments of the queries).
   std::size_t size() const { return cell_offsets_.size() - 1; }
@@ -39,7 +43,8 @@ class VertexStars {
 
  private:
   std::vector<std::size_t> cell_offsets_;
-  std::vector<CellId> cells_;
+  /// Huge pages, and not zeroed on resize (every entry is written by the parallel fill).
+  std::vector<CellId, HugePageAllocator<CellId>> cells_;
   std::vector<std::size_t> neighbor_offsets_;
   std::vector<VertexId> neighbors_;
 };
