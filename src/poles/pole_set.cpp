@@ -69,12 +69,14 @@ struct Choice {
   std::vector<Vec3> first_direction;
 };
 
-void choose_first_poles(const TetrahedronSoup& soup, Choice& choice) {
+/// p⁺ of the samples [lo, hi).
+void choose_first_poles(const TetrahedronSoup& soup, Choice& choice, std::uint32_t lo,
+                        std::uint32_t hi) {
   for (std::uint32_t t = 0; t < soup.tets.size(); ++t) {
     const auto& q = soup.tets[t];
     const detail::Circumsphere& cs = choice.spheres[t];
     for (const std::uint32_t s : q) {
-      if (s < soup.sample_count && cs.squared_radius > choice.first_r2[s]) {
+      if (s >= lo && s < hi && cs.squared_radius > choice.first_r2[s]) {
         choice.first_r2[s] = cs.squared_radius;
         choice.first[s] = t;
         choice.first_direction[s] = (soup.vertices[q[0]] - soup.vertices[s]) + cs.offset;
@@ -83,12 +85,14 @@ void choose_first_poles(const TetrahedronSoup& soup, Choice& choice) {
   }
 }
 
-void choose_second_poles(const TetrahedronSoup& soup, Choice& choice) {
+/// p⁻ of the samples [lo, hi), whose p⁺ are chosen.
+void choose_second_poles(const TetrahedronSoup& soup, Choice& choice, std::uint32_t lo,
+                         std::uint32_t hi) {
   for (std::uint32_t t = 0; t < soup.tets.size(); ++t) {
     const auto& q = soup.tets[t];
     const detail::Circumsphere& cs = choice.spheres[t];
     for (const std::uint32_t s : q) {
-      if (s >= soup.sample_count || choice.first[s] == t) continue;
+      if (s < lo || s >= hi || choice.first[s] == t) continue;
       if (cs.squared_radius <= choice.second_r2[s]) continue;
       const Vec3 direction = (soup.vertices[q[0]] - soup.vertices[s]) + cs.offset;
       if (dot(direction, choice.first_direction[s]) < 0) {
@@ -101,7 +105,8 @@ void choose_second_poles(const TetrahedronSoup& soup, Choice& choice) {
 
 }  // namespace
 
-PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads) {
+PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
+                      std::size_t tetrahedra_per_thread) {
   check_soup(soup);
   const std::size_t n = soup.sample_count;
   Choice choice;
@@ -111,8 +116,20 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads) {
   choice.first_r2.assign(n, -1.0);
   choice.second_r2.assign(n, -1.0);
   choice.first_direction.assign(n, Vec3{});
-  choose_first_poles(soup, choice);
-  choose_second_poles(soup, choice);
+  // Each thread chooses the poles of one range of samples and reads every tetrahedron (in
+  // the same order as one thread: the same choices, ties included), which pays from about
+  // 4·2^20 tetrahedra per thread on (the default): 10^6 samples on a torus, 2·10^7
+  // tetrahedra, poles stage 2.09 / 2.83 -> 1.75 / 1.72 s.
+  const unsigned hardware = std::max(1U, std::thread::hardware_concurrency());
+  const auto ranges = static_cast<unsigned>(std::max<std::size_t>(
+      1, std::min<std::size_t>(threads != 0 ? threads : hardware,
+                               soup.tets.size() / std::max<std::size_t>(1, tetrahedra_per_thread))));
+  detail::run_blocks(ranges, [&](unsigned k) {
+    const auto lo = static_cast<std::uint32_t>(n * k / ranges);
+    const auto hi = static_cast<std::uint32_t>(n * (k + 1) / ranges);
+    choose_first_poles(soup, choice, lo, hi);
+    choose_second_poles(soup, choice, lo, hi);
+  });
 
   // Distinct poles, numbered in tetrahedron order.
   std::vector<std::uint32_t> pole_of_tet(soup.tets.size(), kNoPole);

@@ -133,3 +133,32 @@ TEST_CASE("circumsphere centres are equidistant from the four vertices, slivers 
     }
   }
 }
+
+TEST_CASE("the poles do not depend on the threads choosing them") {
+  // Random (non-Delaunay, non-flat) tetrahedra over 300 vertices, 200 of them samples.
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> coordinate(-1, 1);
+  std::uniform_int_distribution<std::uint32_t> vertex(0, 299);
+  std::vector<Point3> vertices(300);
+  for (Point3& p : vertices) p = {coordinate(rng), coordinate(rng), coordinate(rng)};
+  std::vector<Tet> tets;
+  while (tets.size() < 3000) {
+    const Tet t{vertex(rng), vertex(rng), vertex(rng), vertex(rng)};
+    if (t[0] != t[1] && t[0] != t[2] && t[0] != t[3] && t[1] != t[2] && t[1] != t[3] &&
+        t[2] != t[3]) {
+      tets.push_back(t);
+    }
+  }
+  const TetrahedronSoup soup{vertices, 200, tets, {}};
+  const PoleSet one = compute_poles(soup, 1);
+  REQUIRE(one.is_valid());
+  REQUIRE(one.size() > 100);
+  for (const unsigned threads : {2u, 3u}) {
+    const PoleSet many = compute_poles(soup, threads, 1);  // one range of samples per thread
+    CHECK(many.tet == one.tet);
+    CHECK(many.owner == one.owner);
+    CHECK(many.sample_poles == one.sample_poles);
+    CHECK(many.centre == one.centre);
+    CHECK(many.radius == one.radius);
+  }
+}

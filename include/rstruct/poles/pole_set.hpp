@@ -81,10 +81,13 @@ struct PoleSet {
 };
 
 /// Poles of the samples from a Delaunay tetrahedralisation. Circumspheres are computed in
-/// `threads` threads (0: hardware concurrency); the result does not depend on it.
+/// `threads` threads (0: hardware concurrency), and the poles are chosen by one thread per
+/// `tetrahedra_per_thread` tetrahedra at the most (each reads them all); the result does
+/// not depend on either.
 /// \throws InvalidInput if a tetrahedron has a vertex index out of range, or a representative
 /// is out of range or is itself not its own representative.
 /// \throws InternalError if a tetrahedron is flat.
-PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads = 0);
+PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads = 0,
+                      std::size_t tetrahedra_per_thread = std::size_t{4} << 20);
 
 }  // namespace rstruct::poles
