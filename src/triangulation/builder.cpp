@@ -199,17 +199,20 @@ void Builder::insert_sequentially(std::size_t begin, std::size_t end, std::size_
 // Parallel insertion of one BRIO round (after Marot, Pellerin & Remacle, "One machine, one
 // minute, three billion tetrahedra", 2019). The round, sorted along the Hilbert curve, is
 // cut into one stretch of the curve per worker; every vertex inserted so far (and every
-// point of the round) belongs to the worker whose stretch its key falls in. A worker
-// inserts a point only if the walk, every cell in conflict and therefore every new cell
-// have all four vertices its own; otherwise the point is deferred, unchanged, to a
-// sequential pass after the round. Why no locks are needed: a worker writes only cells
-// with four vertices of its own (cavity and new cells) and the neighbour link of a cell
-// across a facet with three of its own vertices; it reads only cells with at least three
-// vertices of its own (it steps from a cell of its own across a facet to the next). Two
-// workers never share three vertices of a cell, so no cell one of them writes is read or
-// written by another, and each worker's run depends only on cells nobody else touches:
-// the result (cell ids included) depends on the number of workers, not on timing. New
-// cells come from the worker's free list and then from a range of ids reserved for it.
+// point of the round) belongs to the worker whose stretch its key falls in, and the
+// infinite vertex to every worker. A worker inserts a point only if the walk, every cell
+// in conflict and therefore every new cell have all four vertices its own; otherwise the
+// point is deferred, unchanged, to a second pass with other borders and then to a
+// sequential pass. Why no locks are needed: a worker writes only cells with four vertices
+// of its own (cavity and new cells) and the neighbour link of a cell across a facet with
+// three of its own vertices; it reads only cells with at least three vertices of its own
+// (it steps from a cell of its own across a facet to the next). No two workers own three
+// vertices of one cell each (a finite cell would need six vertices; an infinite one, whose
+// infinite vertex both own, five), so no cell one of them writes is read or written by
+// another, and each worker's run depends only on cells nobody else touches: the result
+// (cell ids included) depends on the number of workers, not on timing (ThreadSanitizer
+// finds no race in tests/triangulation/test_parallel_insertion). New cells come from the
+// worker's free list and then from a range of ids reserved for it.
 void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
   const unsigned k = workers_;
   // Pass 1: stretches of the Hilbert curve (the round is sorted along it).

@@ -60,10 +60,6 @@ class Builder {
   /// The infinite vertex counts as every worker's: two workers still never share three
   /// vertices of a cell (see insert_round_in_parallel).
   bool owned(VertexId v) const { return v == kInfiniteVertex || owner_[v] == worker_; }
-  bool fully_owned(CellId c) const {
-    const Cell& k = t_.cells_[c];
-    return owned(k.v[0]) && owned(k.v[1]) && owned(k.v[2]) && owned(k.v[3]);
-  }
   /// Clears the marks of an abandoned conflict search.
   void clear_conflict_marks();
   CellId locate_conflict(VertexId p, bool& conflict);
