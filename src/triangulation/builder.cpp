@@ -237,7 +237,7 @@ void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
     lists[w].resize(first[w + 1] - first[w]);
     for (std::size_t r = first[w]; r < first[w + 1]; ++r) lists[w][r - first[w]] = vertex_at(r);
   }
-  std::vector<VertexId> deferred = parallel_pass(lists, end - begin);
+  std::vector<VertexId> deferred = parallel_pass(lists, begin);
   t_.stats_.parallel_points += end - begin;
   // Points on a surface make long cells (their Delaunay balls approximate medial balls:
   // cells across the hole of a torus join points all around it), which cross every border:
@@ -279,7 +279,7 @@ void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
     }
     for (unsigned w = 0; w < k; ++w) lists[w].clear();
     for (const VertexId p : deferred) lists[owner_store_[p]].push_back(p);  // rank order
-    deferred = parallel_pass(lists, deferred.size());
+    deferred = parallel_pass(lists, end - deferred.size());
   }
   // The rest, in rank order (along the curve), one by one.
   for (const VertexId p : deferred) insert(p);
@@ -288,9 +288,10 @@ void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
 }
 
 // One parallel pass: worker w inserts lists[w] (increasing ranks) with owner_store_ telling
-// which vertices are whose. Returns the points deferred, in increasing rank.
+// which vertices are whose, `inserted` points being in the triangulation already. Returns
+// the points deferred, in increasing rank.
 std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<VertexId>, 8>& lists,
-                                             std::size_t count) {
+                                             std::size_t inserted) {
   auto& cells = t_.cells_;
   const unsigned k = workers_;
   // Each worker's first point whose cell (found by a sequential walk) it owns: there its
@@ -319,7 +320,7 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
   // with n), with a margin, per worker.
   const double per_point =
       std::max(growth_rate_, static_cast<double>(cells.size() - t_.free_count_) /
-                                 static_cast<double>(t_.processed_));
+                                 static_cast<double>(inserted));
   std::array<std::size_t, 9> region{};
   region[0] = cells.size();
   for (unsigned w = 0; w < k; ++w) {
@@ -328,7 +329,6 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
                                              static_cast<double>(lists[w].size() - from[w]));
   }
   std::vector<VertexId> deferred;
-  deferred.reserve(count);
   if (region[k] >= kMaxCells) {
     for (unsigned w = 0; w < k; ++w) deferred.insert(deferred.end(), lists[w].begin(), lists[w].end());
     std::sort(deferred.begin(), deferred.end());
@@ -428,20 +428,13 @@ void Builder::run_worker(const std::vector<VertexId>& list, std::size_t from, Ce
 bool Builder::insert_owned(VertexId p) {
   if (!owned(p)) return false;
   duplicate_of_ = kInfiniteVertex;
-  CellId c = star_is_latest_ ? nearest_star_cell(points_[p], last_) : last_;
-  ++stats_->power_test_calls;
-  if (!in_conflict(c, p)) {
-    bool blocked = false;
-    const CellId start = c;
-    c = walk_owned(points_[p], start, blocked);
-    if (blocked) return false;
-    ++stats_->power_test_calls;
-    if (c == start || !in_conflict(c, p)) {
-      raw_hidden_.push_back({p, c});
-      last_ = c;
-      star_is_latest_ = false;
-      return true;
-    }
+  bool conflict = false;
+  bool blocked = false;
+  const CellId c = locate_conflict(p, conflict, &blocked);
+  if (blocked) return false;
+  if (!conflict) {
+    record_hidden(p, c);
+    return true;
   }
   const bool complete = weights_ == nullptr ? find_conflict_region_impl<false, true>(c, p)
                                             : find_conflict_region_impl<true, true>(c, p);
@@ -745,11 +738,9 @@ bool Builder::in_conflict_general(CellId c, VertexId p) {
 void Builder::insert(VertexId p) {
   duplicate_of_ = kInfiniteVertex;
   bool conflict = false;
-  const CellId c = locate_conflict(p, conflict);
+  const CellId c = locate_conflict(p, conflict, nullptr);
   if (!conflict) {
-    raw_hidden_.push_back({p, c});
-    last_ = c;
-    star_is_latest_ = false;
+    record_hidden(p, c);
     return;
   }
   find_conflict_region(c, p);
@@ -768,7 +759,7 @@ void Builder::insert(VertexId p) {
 // conflicts at every step of the walk as well was slower on points of a surface: a
 // conflict cell met early can be a long thin cell far from p, and the next walk, started
 // from the new cells next to it, gets long.)
-CellId Builder::locate_conflict(VertexId p, bool& conflict) {
+CellId Builder::locate_conflict(VertexId p, bool& conflict, bool* blocked) {
   auto& stats = *stats_;
   CellId start = t_.is_cell(last_) ? last_ : t_.any_cell();
   if (star_is_latest_) start = nearest_star_cell(points_[p], start);
@@ -777,11 +768,20 @@ CellId Builder::locate_conflict(VertexId p, bool& conflict) {
     conflict = true;
     return start;
   }
-  const CellId c = t_.walk(points_[p], start, rng_, stats.walk_steps, stats.orient_calls,
-                           &*box_filter_);
+  const CellId c = blocked != nullptr
+                       ? walk_owned(points_[p], start, *blocked)
+                       : t_.walk(points_[p], start, rng_, stats.walk_steps, stats.orient_calls,
+                                 &*box_filter_);
+  if (blocked != nullptr && *blocked) return c;
   ++stats.power_test_calls;
   conflict = c == start ? false : in_conflict(c, p);
   return c;
+}
+
+void Builder::record_hidden(VertexId p, CellId c) {
+  raw_hidden_.push_back({p, c});
+  last_ = c;
+  star_is_latest_ = false;
 }
 
 // A floating-point construction (centroids and squared distances) that only chooses where

@@ -50,9 +50,10 @@ class Builder {
   /// Parallel pass of one worker: inserts p if everything it touches is owned by this
   /// worker; false (nothing changed) otherwise.
   bool insert_owned(VertexId p);
-  /// One parallel pass over lists[w] for worker w; returns the deferred points, sorted.
+  /// One parallel pass over lists[w] for worker w, `inserted` points being in already;
+  /// returns the deferred points, sorted.
   std::vector<VertexId> parallel_pass(const std::array<std::vector<VertexId>, 8>& lists,
-                                      std::size_t count);
+                                      std::size_t inserted);
   /// The worker's points list[from..], those it cannot insert appended to deferred_.
   void run_worker(const std::vector<VertexId>& list, std::size_t from, CellId start);
   /// Walk through owned cells only (see walk()); `blocked` when the next cell is not owned.
@@ -62,7 +63,12 @@ class Builder {
   bool owned(VertexId v) const { return v == kInfiniteVertex || owner_[v] == worker_; }
   /// Clears the marks of an abandoned conflict search.
   void clear_conflict_marks();
-  CellId locate_conflict(VertexId p, bool& conflict);
+  /// A cell in conflict with p (`conflict`), or else the cell containing p, which hides it.
+  /// With `blocked` (a parallel pass) the walk stays in the worker's cells and sets it when
+  /// it cannot.
+  CellId locate_conflict(VertexId p, bool& conflict, bool* blocked);
+  /// p is hidden, found in cell c.
+  void record_hidden(VertexId p, CellId c);
   /// The finite cell of star_ whose centroid is nearest to q (fallback if none).
   CellId nearest_star_cell(const Point3& q, CellId fallback) const;
   /// Whether cell c conflicts with p (perturbed power test; insphere when unweighted).

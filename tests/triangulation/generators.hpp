@@ -105,6 +105,19 @@ inline std::vector<double> hiding_weights(std::size_t n, double scale, std::uint
   return w;
 }
 
+/// Points with weights (empty: a Delaunay input).
+struct Input {
+  std::vector<Point3> points;
+  std::vector<double> weights;
+};
+
+/// The triangulation of `in`: regular if it has weights, Delaunay otherwise.
+inline triangulation::RegularTriangulation3 build(
+    const Input& in, const triangulation::TriangulationOptions& options = {}) {
+  return in.weights.empty() ? triangulation::RegularTriangulation3(in.points, options)
+                            : triangulation::RegularTriangulation3(in.points, in.weights, options);
+}
+
 using CellKey = std::array<std::uint32_t, 4>;
 
 /// The finite cells as sorted vertex quadruples.

@@ -17,17 +17,13 @@ using rstruct::test::cell_set;
 using rstruct::triangulation::RegularTriangulation3;
 using rstruct::triangulation::TriangulationOptions;
 
-struct Input {
-  std::vector<Point3> points;
-  std::vector<double> weights;
-};
+using rstruct::test::Input;
 
 RegularTriangulation3 build(const Input& in, unsigned threads, std::size_t min_round) {
   TriangulationOptions options;
   options.threads = threads;
   options.parallel_min_round = min_round;
-  return in.weights.empty() ? RegularTriangulation3(in.points, options)
-                            : RegularTriangulation3(in.points, in.weights, options);
+  return rstruct::test::build(in, options);
 }
 
 std::vector<std::uint32_t> hidden_ids(const RegularTriangulation3& t) {
@@ -155,12 +151,8 @@ TEST_CASE("parallel insertion equals sequential on degenerate inputs") {
     TriangulationOptions parallel;
     parallel.threads = threads;
     parallel.parallel_min_round = 100;
-    const auto make = [&](const TriangulationOptions& o) {
-      return in.weights.empty() ? RegularTriangulation3(in.points, o)
-                                : RegularTriangulation3(in.points, in.weights, o);
-    };
-    const RegularTriangulation3 one = make(sequential);
-    const RegularTriangulation3 many = make(parallel);
+    const RegularTriangulation3 one = rstruct::test::build(in, sequential);
+    const RegularTriangulation3 many = rstruct::test::build(in, parallel);
     const auto report = many.is_valid();
     RC_ASSERT(report.ok);
     RC_ASSERT(cell_set(many) == cell_set(one));

@@ -17,10 +17,8 @@ using rstruct::triangulation::RegularTriangulation3;
 using rstruct::triangulation::TriangulationOptions;
 using rstruct::triangulation::VertexId;
 
-struct Input {
-  std::vector<Point3> points;
-  std::vector<double> weights;
-};
+using rstruct::test::build;
+using rstruct::test::Input;
 
 Input degenerate_input(int kind, std::uint64_t seed, std::size_t n) {
   using namespace rstruct::test;
@@ -43,11 +41,6 @@ Input degenerate_input(int kind, std::uint64_t seed, std::size_t n) {
       return {p, hiding_weights(p.size(), 1.5, seed ^ 7)};
     }
   }
-}
-
-RegularTriangulation3 build(const Input& in, const TriangulationOptions& options) {
-  return in.weights.empty() ? RegularTriangulation3(in.points, options)
-                            : RegularTriangulation3(in.points, in.weights, options);
 }
 
 }  // namespace
