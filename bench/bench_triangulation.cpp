@@ -4,8 +4,11 @@
 // is its own; each case runs --runs times and the medians are printed.
 //
 // Usage: bench_triangulation [--runs R] [--max N] [--huge] [--case NAME] [--threads T]
+//                            [--scheme automatic|borders|locks] [--canonical]
 //   --max N   largest uniform size of the ladder (default 1e6); --huge adds 1e7.
 //   --threads T  insertion threads (default 1, the targets are single-thread).
+//   --scheme S   how the parallel passes share the work (TriangulationOptions).
+//   --canonical  number the cells in the canonical order (counted in the insertion time).
 // Columns: case, points, vertices, finite cells, hidden+merged, sort s, insertion s,
 // total wall and CPU s, bytes per point (peak RSS minus RSS before the points were generated, so the
 // input points, which the triangulation owns, are included), walk steps and conflict
@@ -88,6 +91,9 @@ double filter_failure_rate() {
 }
 
 unsigned g_threads = 1;
+rstruct::triangulation::TriangulationOptions::ParallelScheme g_scheme =
+    rstruct::triangulation::TriangulationOptions::ParallelScheme::automatic;
+bool g_canonical = false;
 
 Result run_case(const std::string& name, std::size_t n, std::uint64_t seed) {
   const std::size_t before = rstruct::current_memory_bytes();
@@ -104,6 +110,8 @@ Result run_case(const std::string& name, std::size_t n, std::uint64_t seed) {
   rstruct::Stopwatch clock;
   rstruct::triangulation::TriangulationOptions options;
   options.threads = g_threads;
+  options.parallel_scheme = g_scheme;
+  options.canonical_order = g_canonical;
   const RegularTriangulation3 t =
       weights.empty() ? RegularTriangulation3(std::move(points), options)
                       : RegularTriangulation3(std::move(points), std::move(weights), options);
@@ -208,9 +216,22 @@ int main(int argc, char** argv) {
       only = argv[++i];
     } else if (a == "--threads" && i + 1 < argc) {
       g_threads = static_cast<unsigned>(std::max(0, std::atoi(argv[++i])));
+    } else if (a == "--scheme" && i + 1 < argc) {
+      using Scheme = rstruct::triangulation::TriangulationOptions::ParallelScheme;
+      const std::string v = argv[++i];
+      if (v != "automatic" && v != "borders" && v != "locks") {
+        std::fprintf(stderr, "--scheme: automatic, borders or locks\n");
+        return 2;
+      }
+      g_scheme = v == "borders" ? Scheme::borders
+                 : v == "locks"   ? Scheme::locks
+                                  : Scheme::automatic;
+    } else if (a == "--canonical") {
+      g_canonical = true;
     } else {
       std::fprintf(stderr,
-                   "usage: %s [--runs R] [--max N] [--huge] [--case NAME] [--threads T]\n",
+                   "usage: %s [--runs R] [--max N] [--huge] [--case NAME] [--threads T] "
+                   "[--scheme automatic|borders|locks] [--canonical]\n",
                    argv[0]);
       return 2;
     }

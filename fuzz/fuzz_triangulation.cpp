@@ -1,7 +1,8 @@
 // Fuzz target: insertion sequences into RegularTriangulation3 with all checks on.
 // Input bytes: byte 0 = flags (bit 0 weighted, bit 1 BRIO order, bits 2-4 exponent shift,
 // bit 5 parallel insertion with 2 threads, 3 with bit 6 too; then up to 400 points and the
-// cells are compared with a one-thread build's),
+// cells are compared with a one-thread build's; bit 7 with bit 5: vertex locks and the
+// canonical order, and the whole cell array is compared),
 // then one record per point: 3 signed bytes of coordinates (a small grid, so cospherical,
 // coplanar and duplicate points are common), plus one unsigned weight byte when weighted.
 // Expected outcomes: a valid triangulation after every insertion, or InvalidInput for flat
@@ -40,6 +41,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (parallel) {
     options.threads = 2 + ((data[0] >> 6) & 1);
     options.parallel_min_round = 1;  // every round of 64 points per thread
+    if ((data[0] & 128) != 0) {
+      options.parallel_scheme = rstruct::triangulation::TriangulationOptions::ParallelScheme::locks;
+      options.canonical_order = true;
+    }
   } else if (n <= 60) {
     options.after_insertion = [](const RegularTriangulation3& t, std::uint32_t) {
       const auto r = t.is_valid();
@@ -58,6 +63,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       // The triangulation is unique: one thread must give the same cells.
       rstruct::triangulation::TriangulationOptions one;
       one.spatial_sort = options.spatial_sort;
+      one.canonical_order = options.canonical_order;
       const RegularTriangulation3 s = weighted ? RegularTriangulation3(points, weights, one)
                                                : RegularTriangulation3(points, one);
       const auto cells = [](const RegularTriangulation3& x) {
@@ -71,6 +77,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       };
       if (cells(s) != cells(t) || s.hidden_points().size() != t.hidden_points().size()) {
         throw std::logic_error("parallel insertion differs from one thread");
+      }
+      if (options.canonical_order) {
+        bool same = s.cell_capacity() == t.cell_capacity();
+        for (std::uint32_t c = 0; same && c < s.cell_capacity(); ++c) {
+          same = s.is_cell(c) && t.is_cell(c) && s.vertices(c) == t.vertices(c);
+          for (int i = 0; same && i < 4; ++i) same = s.neighbor(c, i) == t.neighbor(c, i);
+        }
+        if (!same) throw std::logic_error("canonical cell arrays differ");
       }
       // The last BRIO round (3/4 of the points expected) is large enough for the passes.
       if (options.spatial_sort && n >= 300 && t.stats().parallel_points == 0) {

@@ -11,6 +11,7 @@
 
 #include "rstruct/core/assert.hpp"
 #include "rstruct/core/error.hpp"
+#include "rstruct/core/parallel.hpp"
 #include "rstruct/core/stopwatch.hpp"
 #include "rstruct/predicates/predicates.hpp"
 #include "rstruct/triangulation/spatial_sort.hpp"
@@ -151,6 +152,7 @@ void Builder::run() {
     keys_ = hilbert_keys(t_.points_);
     owner_store_.assign(n, 0);
     owner_ = owner_store_.data();
+    use_locks_ = options_.parallel_scheme == TriangulationOptions::ParallelScheme::locks;
     t_.stats_.threads = workers_;
     for (std::size_t k = 4; k < n;) {
       std::size_t end = k + 1;
@@ -180,6 +182,7 @@ void Builder::run() {
   vertex_mark_.clear();
   vertex_mark_.shrink_to_fit();
   if (reorder_) restore_input_order();
+  if (options_.canonical_order) canonicalize_cells();
   t_.order_.clear();
   t_.order_.shrink_to_fit();
   t_.finalize(raw_hidden_);
@@ -213,6 +216,22 @@ void Builder::insert_sequentially(std::size_t begin, std::size_t end, std::size_
 // (cell ids included) depends on the number of workers, not on timing (ThreadSanitizer
 // finds no race in tests/triangulation/test_parallel_insertion). New cells come from the
 // worker's free list and then from a range of ids reserved for it.
+//
+// Passes with locks (points on a surface). Fixed borders defer too much there (3·10^5
+// points on a torus: 47 %), so once a pass defers a quarter of a round, that round's
+// deferred points and every later round go to passes where ownership is taken, not
+// given: a worker owns a vertex while it holds its lock (a byte per vertex, taken by
+// compare-and-swap, never waited for). owned() takes the lock of every vertex the walk
+// steps to and of every conflict cell's vertices; if another worker holds one, the point
+// is deferred and the locks taken for it released. The same argument as above shows that
+// no cell is accessed by two workers at once, now at every moment instead of for the
+// whole pass: a cell is read only with three of its vertices locked, written only with
+// four (or three, for the neighbour link of a cell outside the cavity), and a lock is
+// released only between two insertions, with release/acquire ordering. After an
+// insertion the worker keeps the locks of the new star's vertices, where its next walk
+// starts, and releases the others. Double torus, 85,237 points, two workers: 1 % deferred
+// (fixed borders: 53 %). The cell ids then depend on timing (the triangulation does
+// not): TriangulationOptions::canonical_order renumbers them.
 void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
   const unsigned k = workers_;
   // Pass 1: stretches of the Hilbert curve (the round is sorted along it).
@@ -237,19 +256,44 @@ void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
     lists[w].resize(first[w + 1] - first[w]);
     for (std::size_t r = first[w]; r < first[w + 1]; ++r) lists[w][r - first[w]] = vertex_at(r);
   }
-  std::vector<VertexId> deferred = parallel_pass(lists, begin);
+  if (use_locks_) {
+    // Surfaces: a worker takes the locks of the vertices it meets (see above).
+    std::fill(owner_store_.begin(), owner_store_.begin() + static_cast<std::ptrdiff_t>(end),
+              std::uint8_t{0});
+    std::vector<VertexId> deferred = parallel_pass(lists, begin, true);
+    t_.stats_.parallel_points += end - begin;
+    if (deferred.size() * 4 > end - begin && end - begin >= 4096 * k) parallel_futile_ = true;
+    for (const VertexId p : deferred) insert(p);
+    t_.stats_.deferred_points += deferred.size();
+    t_.processed_ = end;
+    return;
+  }
+  std::vector<VertexId> deferred = parallel_pass(lists, begin, false);
   t_.stats_.parallel_points += end - begin;
   // Points on a surface make long cells (their Delaunay balls approximate medial balls:
   // cells across the hole of a torus join points all around it), which cross every border:
   // 3·10^5 points on a torus, two workers, deferred 47 % in pass 1 and 97 % of those again
-  // in pass 2, slower than one thread. So after a pass deferring a quarter, the remaining
-  // rounds are sequential. Points in a volume defer a few percent (10^6 uniform: 5 %), more
-  // in small rounds (the borders are a larger share): those are not judged.
-  if (deferred.size() * 4 > end - begin && end - begin >= 4096 * k) parallel_futile_ = true;
+  // in pass 2, slower than one thread. So after a pass deferring a quarter, this round's
+  // deferred points and the later rounds take locks instead (and if even those defer a
+  // quarter, the remaining rounds are sequential). Points in a volume defer a few percent
+  // (10^6 uniform: 5 %), more in small rounds (the borders are a larger share): those are
+  // not judged.
+  if (deferred.size() * 4 > end - begin && end - begin >= 4096 * k) {
+    if (options_.parallel_scheme == TriangulationOptions::ParallelScheme::borders) {
+      parallel_futile_ = true;
+    } else {
+      use_locks_ = true;
+      for (unsigned w = 0; w < k; ++w) lists[w].clear();
+      for (const VertexId p : deferred) lists[owner_store_[p]].push_back(p);  // rank order
+      std::fill(owner_store_.begin(), owner_store_.begin() + static_cast<std::ptrdiff_t>(end),
+                std::uint8_t{0});
+      deferred = parallel_pass(lists, end - deferred.size(), true);
+    }
+  }
   // Pass 2: the deferred points lie near the borders of pass 1; they are cut again across
   // them, by planes perpendicular to the axis along which they spread most (10^6 uniform
   // points: 5 % -> 0.3 % deferred).
-  if (!parallel_futile_ &&
+  if (!use_locks_ && !parallel_futile_ &&
       deferred.size() >= std::max<std::size_t>(options_.parallel_min_round, 64 * workers_) / 4) {
     std::array<double, 3> lo{}, hi{};
     lo.fill(std::numeric_limits<double>::infinity());
@@ -279,7 +323,7 @@ void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
     }
     for (unsigned w = 0; w < k; ++w) lists[w].clear();
     for (const VertexId p : deferred) lists[owner_store_[p]].push_back(p);  // rank order
-    deferred = parallel_pass(lists, end - deferred.size());
+    deferred = parallel_pass(lists, end - deferred.size(), false);
   }
   // The rest, in rank order (along the curve), one by one.
   for (const VertexId p : deferred) insert(p);
@@ -291,17 +335,31 @@ void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
 // which vertices are whose, `inserted` points being in the triangulation already. Returns
 // the points deferred, in increasing rank.
 std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<VertexId>, 8>& lists,
-                                             std::size_t inserted) {
+                                             std::size_t inserted, bool locking) {
   auto& cells = t_.cells_;
   const unsigned k = workers_;
-  // Each worker's first point whose cell (found by a sequential walk) it owns: there its
-  // own walks start. The points before it are deferred.
+  while (helpers_.size() + 1 < k) {
+    helpers_.push_back(std::make_unique<Builder>(*this, static_cast<std::uint8_t>(helpers_.size() + 1)));
+  }
+  const auto worker = [&](unsigned w) -> Builder& { return w == 0 ? *this : *helpers_[w - 1]; };
+  for (unsigned w = 0; w < k; ++w) {
+    Builder& b = worker(w);
+    b.owner_ = owner_;
+    b.worker_ = static_cast<std::uint8_t>(w);
+    b.locking_ = locking;
+  }
+  // Each worker's first point whose cell (found by a sequential walk) it owns (without
+  // locks) or can lock: there its own walks start. The points before it are deferred.
   std::array<CellId, 8> start{};
   std::array<std::size_t, 8> from{};
   CellId hint = t_.is_cell(last_) ? last_ : t_.any_cell();
   for (unsigned w = 0; w < k; ++w) {
     start[w] = kNoCell;
     from[w] = lists[w].size();
+    if (locking) {
+      worker(w).choose_locked_start(lists[w], from[w], hint);
+      continue;
+    }
     for (std::size_t i = 0; i < lists[w].size() && i < 64; ++i) {
       hint = t_.walk(points_[lists[w][i]], hint, rng_, stats_->walk_steps,
                      stats_->orient_calls, &*box_filter_);
@@ -330,21 +388,19 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
   }
   std::vector<VertexId> deferred;
   if (region[k] >= kMaxCells) {
-    for (unsigned w = 0; w < k; ++w) deferred.insert(deferred.end(), lists[w].begin(), lists[w].end());
+    for (unsigned w = 0; w < k; ++w) {
+      worker(w).unlock_all();
+      worker(w).locking_ = false;
+      deferred.insert(deferred.end(), lists[w].begin(), lists[w].end());
+    }
     std::sort(deferred.begin(), deferred.end());
     return deferred;
   }
   if (region[k] > cells.capacity()) cells.reserve(region[k] + region[k] / 4);
   cells.resize(region[k]);  // default-initialised: written by the workers (or freed below)
-  while (helpers_.size() + 1 < k) {
-    helpers_.push_back(std::make_unique<Builder>(*this, static_cast<std::uint8_t>(helpers_.size() + 1)));
-  }
-  const auto worker = [&](unsigned w) -> Builder& { return w == 0 ? *this : *helpers_[w - 1]; };
   for (unsigned w = 0; w < k; ++w) {
     Builder& b = worker(w);
     b.marks_.resize(region[k] / 32 + 1, 0);
-    b.owner_ = owner_;
-    b.worker_ = static_cast<std::uint8_t>(w);
     b.in_region_ = true;
     b.region_next_ = static_cast<CellId>(region[w]);
     b.region_end_ = static_cast<CellId>(region[w + 1]);
@@ -379,6 +435,7 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
   for (unsigned w = 0; w < k; ++w) {
     Builder& b = worker(w);
     b.in_region_ = false;
+    b.locking_ = false;
     if (w + 1 < k) {
       for (CellId c = b.region_next_; c < b.region_end_; ++c) {
         cells[c].v[0] = RegularTriangulation3::kFreeMark;
@@ -417,16 +474,74 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
 }
 
 void Builder::run_worker(const std::vector<VertexId>& list, std::size_t from, CellId start) {
-  last_ = start;
-  star_is_latest_ = false;
+  if (!locking_) {
+    last_ = start;
+    star_is_latest_ = false;
+  }
   for (std::size_t i = from; i < list.size(); ++i) {
     const VertexId p = list[i];
-    if (exhausted_ || !insert_owned(p)) deferred_.push_back(p);
+    if (exhausted_ || !insert_owned(p)) {
+      if (locking_) unlock_attempt();
+      deferred_.push_back(p);
+    }
+  }
+  if (locking_) unlock_all();
+}
+
+void Builder::unlock_attempt() {
+  for (std::size_t i = kept_locks_; i < locked_.size(); ++i) {
+    std::atomic_ref<std::uint8_t>(owner_[locked_[i]]).store(0, std::memory_order_release);
+  }
+  locked_.resize(kept_locks_);
+}
+
+void Builder::unlock_all() {
+  kept_locks_ = 0;
+  unlock_attempt();
+  star_is_latest_ = false;  // the other workers may change the star from now on
+}
+
+// The new star's vertices are p and the boundary's, numbered by build_star (all of them
+// while the numbering is not full; then every lock is kept, until the next star).
+void Builder::keep_star_locks(VertexId p) {
+  if (local_vertices_.size() < kLocal - 1) {
+    std::size_t kept = 0;
+    for (const VertexId v : locked_) {
+      if (v == p || vertex_local_[v] != 0) {
+        locked_[kept++] = v;
+      } else {
+        std::atomic_ref<std::uint8_t>(owner_[v]).store(0, std::memory_order_release);
+      }
+    }
+    locked_.resize(kept);
+  }
+  kept_locks_ = locked_.size();
+}
+
+void Builder::choose_locked_start(const std::vector<VertexId>& list, std::size_t& from,
+                                  CellId& hint) {
+  from = list.size();
+  star_is_latest_ = false;
+  for (std::size_t i = 0; i < list.size() && i < 64; ++i) {
+    hint = t_.walk(points_[list[i]], hint, rng_, stats_->walk_steps, stats_->orient_calls,
+                   &*box_filter_);
+    bool all = true;
+    for (const VertexId v : t_.cells_[hint].v) all = all && owned(v);
+    if (all) {
+      kept_locks_ = locked_.size();
+      star_.assign(1, hint);
+      last_ = hint;
+      star_is_latest_ = true;
+      from = i;
+      return;
+    }
+    unlock_attempt();
   }
 }
 
 bool Builder::insert_owned(VertexId p) {
   if (!owned(p)) return false;
+  walk_point_ = p;
   duplicate_of_ = kInfiniteVertex;
   bool conflict = false;
   bool blocked = false;
@@ -434,6 +549,7 @@ bool Builder::insert_owned(VertexId p) {
   if (blocked) return false;
   if (!conflict) {
     record_hidden(p, c);
+    if (locking_) unlock_attempt();
     return true;
   }
   const bool complete = weights_ == nullptr ? find_conflict_region_impl<false, true>(c, p)
@@ -449,6 +565,7 @@ bool Builder::insert_owned(VertexId p) {
   }
   build_star(p);
   collect_hidden_vertices(duplicate_of_);
+  if (locking_) keep_star_locks(p);
   for (const VertexId v : local_vertices_) vertex_local_[v] = 0;
   release_conflict_region();
   return true;
@@ -465,6 +582,37 @@ void Builder::clear_conflict_marks() {
 // the segment from the start cell's centroid first, then the facets in random order, each
 // move decided by an exact orientation.
 CellId Builder::walk_owned(const Point3& q, CellId start, bool& blocked) {
+  const CellId c = walk_owned_steps(q, start, blocked);
+  if (locking_ && c != start) {
+    keep_walk_end_locks(c);
+    lock(walk_point_);  // released with the others if the insertion is deferred
+  }
+  return c;
+}
+
+// With locks, a walk ends holding only the locks of the cell it ends in, and that cell
+// becomes the start of the next walk even if the insertion is then deferred. Before, the start stayed at the latest insertion, so after a run of
+// deferred points (near the other worker) the walks grew (10^6 points on a torus: 1000 to
+// 65,000 steps, up to 0.5 apart where points are 0.004 apart), locked every vertex on
+// their way, and made the other worker defer a fifth of its points.
+void Builder::keep_walk_end_locks(CellId c) {
+  const Cell& k = t_.cells_[c];
+  std::size_t kept = 0;
+  for (const VertexId v : locked_) {
+    if (v == k.v[0] || v == k.v[1] || v == k.v[2] || v == k.v[3]) {
+      locked_[kept++] = v;
+    } else {
+      std::atomic_ref<std::uint8_t>(owner_[v]).store(0, std::memory_order_release);
+    }
+  }
+  locked_.resize(kept);
+  kept_locks_ = kept;
+  star_.assign(1, c);
+  last_ = c;
+  star_is_latest_ = true;
+}
+
+CellId Builder::walk_owned_steps(const Point3& q, CellId start, bool& blocked) {
   const auto& cells = t_.cells_;
   CellId c = start;
   CellId previous = kNoCell;
@@ -597,6 +745,137 @@ void Builder::restore_input_order() {
   points_ = t_.points_.data();
   weights_ = weights_ != nullptr ? t_.weights_.data() : nullptr;
   reorder_ = false;
+}
+
+// The canonical order: cells by their smallest vertex id, then by their other vertex ids
+// in increasing order; within a cell the two smallest vertex ids first, increasing, and
+// the other two in the order that keeps the orientation (an even permutation of the
+// stored order). It depends only on the set of cells, which the perturbation makes
+// unique: not on the insertion order, the walks or the threads. A counting sort by
+// smallest vertex, each vertex's few dozen cells then sorted; every pass runs on the
+// insertion threads, each on a fixed stretch of cells (so the scatter is deterministic too).
+void Builder::canonicalize_cells() {
+  auto& cells = t_.cells_;
+  const std::size_t m = cells.size();
+  const std::size_t n = t_.points_.size();
+  const unsigned threads = thread_count(workers_, m, std::size_t{1} << 16);
+  const std::size_t stretch = (m + threads - 1) / threads;
+  const auto on_stretches = [&](auto&& fn) {
+    parallel_chunks(m, threads, stretch, [&](std::size_t begin, std::size_t end, unsigned) {
+      fn(begin / stretch, begin, end);
+    });
+  };
+  // Pass 1: each cell's new slot for every old slot (2 bits each): its rank by vertex id
+  // (the ids of a cell are distinct; the infinite vertex's is the largest), the two
+  // largest exchanged when the ranking is an odd permutation; and per stretch, the number
+  // of cells by smallest vertex.
+  std::vector<std::uint8_t> new_slot(m, 0);
+  std::vector<std::uint32_t> count(static_cast<std::size_t>(threads) * n, 0);
+  std::vector<std::size_t> live_in(threads, 0);
+  on_stretches([&](std::size_t t, std::size_t begin, std::size_t end) {
+    std::uint32_t* mine = count.data() + t * n;
+    for (std::size_t c = begin; c < end; ++c) {
+      const Cell& k = cells[c];
+      if (k.v[0] == RegularTriangulation3::kFreeMark) continue;
+      ++live_in[t];
+      unsigned rank[4] = {0, 0, 0, 0};
+      unsigned inversions = 0;
+      for (unsigned i = 0; i < 4; ++i) {
+        for (unsigned j = i + 1; j < 4; ++j) {
+          const unsigned greater = k.v[i] > k.v[j] ? 1u : 0u;
+          inversions += greater;
+          rank[i] += greater;
+          rank[j] += 1u - greater;
+        }
+      }
+      std::uint8_t packed = 0;
+      for (unsigned j = 0; j < 4; ++j) {
+        const unsigned to = rank[j] >= 2 ? rank[j] ^ (inversions & 1u) : rank[j];
+        packed |= static_cast<std::uint8_t>(to << (2 * j));
+        if (rank[j] == 0) ++mine[k.v[j]];
+      }
+      new_slot[c] = packed;
+    }
+  });
+  std::size_t live = 0;
+  for (const std::size_t l : live_in) live += l;
+  // Where each stretch's cells of each bucket go; afterwards end_of[v], the end of v's.
+  std::vector<std::uint32_t> end_of(n);
+  {
+    std::uint32_t at = 0;
+    for (std::size_t v = 0; v < n; ++v) {
+      for (std::size_t t = 0; t < threads; ++t) {
+        const std::uint32_t c = count[t * n + v];
+        count[t * n + v] = at;
+        at += c;
+      }
+      end_of[v] = at;
+    }
+  }
+  // Pass 2: (other three ids sorted, cell) records scattered into the buckets, then each
+  // bucket sorted (contiguous records: no random reads).
+  struct Record {
+    std::array<VertexId, 3> rest;
+    CellId cell;
+  };
+  const std::unique_ptr<Record[]> records(new Record[live]);
+  on_stretches([&](std::size_t t, std::size_t begin, std::size_t end) {
+    std::uint32_t* at = count.data() + t * n;
+    for (std::size_t c = begin; c < end; ++c) {
+      const Cell& k = cells[c];
+      if (k.v[0] == RegularTriangulation3::kFreeMark) continue;
+      VertexId v[4];  // in their new slots: the two smallest first, increasing
+      for (unsigned j = 0; j < 4; ++j) v[(new_slot[c] >> (2 * j)) & 3u] = k.v[j];
+      records[at[v[0]]++] = {{v[1], std::min(v[2], v[3]), std::max(v[2], v[3])},
+                             static_cast<CellId>(c)};
+    }
+  });
+  count = {};
+  parallel_chunks(n, threads, (n + threads - 1) / threads,
+                  [&](std::size_t first, std::size_t last, unsigned) {
+                    for (std::size_t v = first; v < last; ++v) {
+                      // Insertion sort: a bucket holds a few dozen cells.
+                      Record* lo = records.get() + (v == 0 ? 0 : end_of[v - 1]);
+                      Record* hi = records.get() + end_of[v];
+                      for (Record* r = lo + 1; r < hi; ++r) {
+                        const Record x = *r;
+                        Record* q = r;
+                        for (; q > lo && x.rest < (q - 1)->rest; --q) *q = *(q - 1);
+                        *q = x;
+                      }
+                    }
+                  });
+  end_of = {};
+  std::vector<CellId> new_id(m, kNoCell);
+  parallel_chunks(live, threads, (live + threads - 1) / threads,
+                  [&](std::size_t first, std::size_t last, unsigned) {
+                    for (std::size_t i = first; i < last; ++i) {
+                      new_id[records[i].cell] = static_cast<CellId>(i);
+                    }
+                  });
+  // Pass 3: each cell written to its new place, its vertices and links moved to their new
+  // slots, the links renamed.
+  std::vector<Cell, HugePageAllocator<Cell>> out(live);
+  on_stretches([&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t c = begin; c < end; ++c) {
+      const Cell& k = cells[c];
+      if (k.v[0] == RegularTriangulation3::kFreeMark) continue;
+      Cell& o = out[new_id[c]];
+      const unsigned mine = new_slot[c];
+      for (unsigned j = 0; j < 4; ++j) {
+        const unsigned to = (mine >> (2 * j)) & 3u;
+        const std::uint32_t link = k.n[j];
+        const CellId nb = link >> 2;
+        o.v[to] = k.v[j];
+        o.n[to] = new_id[nb] << 2 |
+                  ((static_cast<unsigned>(new_slot[nb]) >> (2 * (link & 3u))) & 3u);
+      }
+    }
+  });
+  cells.swap(out);
+  for (HiddenPoint& h : raw_hidden_) h.cell = h.cell < m ? new_id[h.cell] : kNoCell;
+  t_.free_head_ = kNoCell;
+  t_.free_count_ = 0;
 }
 
 void Builder::after_insertion(VertexId p) {
@@ -780,6 +1059,7 @@ CellId Builder::locate_conflict(VertexId p, bool& conflict, bool* blocked) {
 
 void Builder::record_hidden(VertexId p, CellId c) {
   raw_hidden_.push_back({p, c});
+  if (locking_) return;  // the walk starts from the kept star, whose locks are held
   last_ = c;
   star_is_latest_ = false;
 }

@@ -3,6 +3,7 @@
 // power test). Private to src/triangulation.
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -53,14 +54,48 @@ class Builder {
   /// One parallel pass over lists[w] for worker w, `inserted` points being in already;
   /// returns the deferred points, sorted.
   std::vector<VertexId> parallel_pass(const std::array<std::vector<VertexId>, 8>& lists,
-                                      std::size_t inserted);
+                                      std::size_t inserted, bool locking);
+  /// Renumbers the live cells in the canonical order (see TriangulationOptions) and drops
+  /// the free ones; the hidden records' hint cells follow.
+  void canonicalize_cells();
   /// The worker's points list[from..], those it cannot insert appended to deferred_.
   void run_worker(const std::vector<VertexId>& list, std::size_t from, CellId start);
   /// Walk through owned cells only (see walk()); `blocked` when the next cell is not owned.
   CellId walk_owned(const Point3& q, CellId start, bool& blocked);
+  CellId walk_owned_steps(const Point3& q, CellId start, bool& blocked);
+  /// With locks: keeps only the locks of cell c, which becomes the start of the next walk.
+  void keep_walk_end_locks(CellId c);
   /// The infinite vertex counts as every worker's: two workers still never share three
-  /// vertices of a cell (see insert_round_in_parallel).
-  bool owned(VertexId v) const { return v == kInfiniteVertex || owner_[v] == worker_; }
+  /// vertices of a cell (see insert_round_in_parallel). In a pass with locks, a vertex
+  /// is the worker's once it holds its lock: owned() then tries to take it.
+  bool owned(VertexId v) {
+    if (v == kInfiniteVertex) return true;
+    if (!locking_) return owner_[v] == worker_;
+    return lock(v);
+  }
+  /// Takes the lock of vertex v for this worker (or finds it held by this worker already);
+  /// false if another worker holds it. Never waits.
+  bool lock(VertexId v) {
+    std::atomic_ref<std::uint8_t> slot(owner_[v]);
+    const auto me = static_cast<std::uint8_t>(worker_ + 1);
+    std::uint8_t seen = slot.load(std::memory_order_relaxed);
+    if (seen == me) return true;
+    if (seen != 0 || !slot.compare_exchange_strong(seen, me, std::memory_order_acquire,
+                                                   std::memory_order_relaxed)) {
+      return false;
+    }
+    locked_.push_back(v);
+    return true;
+  }
+  /// Releases the locks taken since the last kept star (an abandoned insertion).
+  void unlock_attempt();
+  /// After an insertion: keeps the locks of the new star's vertices (where the next walk
+  /// starts), releases the others.
+  void keep_star_locks(VertexId p);
+  /// Releases every lock of this worker (end of a pass).
+  void unlock_all();
+  /// A pass with locks: worker w's first point whose cell it can lock, from lists[w][..64].
+  void choose_locked_start(const std::vector<VertexId>& list, std::size_t& from, CellId& hint);
   /// Clears the marks of an abandoned conflict search.
   void clear_conflict_marks();
   /// A cell in conflict with p (`conflict`), or else the cell containing p, which hides it.
@@ -208,8 +243,15 @@ class Builder {
   unsigned workers_ = 1;
   std::vector<std::uint32_t> keys_;        // per rank: Hilbert key (main builder only)
   std::vector<std::uint8_t> owner_store_;  // per rank: owning worker (main builder only)
-  const std::uint8_t* owner_ = nullptr;    // main's owner_store_
+  /// main's owner_store_: the owning worker of each vertex (a pass without locks), or 0
+  /// (free) / holder + 1 (a pass with locks; atomic accesses only).
+  std::uint8_t* owner_ = nullptr;
   std::uint8_t worker_ = 0;
+  bool locking_ = false;                   // this pass takes vertex locks
+  bool use_locks_ = false;                 // main: rounds after a futile pass take locks
+  std::vector<VertexId> locked_;           // locks held, those of the kept star first
+  std::size_t kept_locks_ = 0;             // locked_[0, kept_locks_): the kept star's
+  VertexId walk_point_ = kInfiniteVertex;  // the point being inserted
   bool in_region_ = false;                 // new cells come from [region_next_, region_end_)
   CellId region_next_ = 0;
   CellId region_end_ = 0;

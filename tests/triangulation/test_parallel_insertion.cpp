@@ -1,8 +1,12 @@
-// Parallel insertion (TriangulationOptions::threads > 1): the triangulation is the same as
-// the sequential one (same finite cells, hidden points and duplicates), valid, built mostly
-// by the parallel passes, and the same on every run (cell ids do not depend on timing).
+// Parallel insertion (TriangulationOptions::threads > 1), with fixed borders and with
+// vertex locks: the triangulation is the same as the sequential one (same finite cells,
+// hidden points and duplicates), valid, built mostly by the parallel passes; with fixed
+// borders the cell ids do not depend on timing, and in the canonical order
+// (TriangulationOptions::canonical_order) the cell array is the same for every thread
+// count and every run.
 #include <rapidcheck/catch.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
@@ -19,11 +23,47 @@ using rstruct::triangulation::TriangulationOptions;
 
 using rstruct::test::Input;
 
-RegularTriangulation3 build(const Input& in, unsigned threads, std::size_t min_round) {
+using Scheme = TriangulationOptions::ParallelScheme;
+
+RegularTriangulation3 build(const Input& in, unsigned threads, std::size_t min_round,
+                            Scheme scheme = Scheme::automatic, bool canonical = false) {
   TriangulationOptions options;
   options.threads = threads;
   options.parallel_min_round = min_round;
+  options.parallel_scheme = scheme;
+  options.canonical_order = canonical;
   return rstruct::test::build(in, options);
+}
+
+/// Same cell array: the same ids, vertices in the same slots and the same neighbours.
+bool same_cell_array(const RegularTriangulation3& a, const RegularTriangulation3& b) {
+  if (a.cell_capacity() != b.cell_capacity()) return false;
+  for (rstruct::triangulation::CellId c = 0; c < a.cell_capacity(); ++c) {
+    if (a.is_cell(c) != b.is_cell(c)) return false;
+    if (!a.is_cell(c)) continue;
+    if (a.vertices(c) != b.vertices(c)) return false;
+    for (int i = 0; i < 4; ++i) {
+      if (a.neighbor(c, i) != b.neighbor(c, i)) return false;
+    }
+  }
+  return true;
+}
+
+/// The canonical order's definition, checked cell by cell: no free cells; within a cell
+/// the two smallest ids first, increasing, and the larger two after them; cells sorted by
+/// their vertex ids.
+bool is_canonical(const RegularTriangulation3& t) {
+  std::array<std::uint32_t, 4> previous{};
+  for (rstruct::triangulation::CellId c = 0; c < t.cell_capacity(); ++c) {
+    if (!t.is_cell(c)) return false;
+    const std::array<std::uint32_t, 4> v = t.vertices(c);
+    if (!(v[0] < v[1] && v[1] < v[2] && v[1] < v[3])) return false;
+    std::array<std::uint32_t, 4> sorted = v;
+    std::sort(sorted.begin(), sorted.end());
+    if (c > 0 && !(previous < sorted)) return false;
+    previous = sorted;
+  }
+  return true;
 }
 
 std::vector<std::uint32_t> hidden_ids(const RegularTriangulation3& t) {
@@ -87,9 +127,43 @@ TEST_CASE("parallel insertion: a grid (cospherical everywhere)") {
 }
 
 TEST_CASE("parallel insertion: points on a torus surface") {
-  // Long cells cross the workers' borders: the construction turns sequential after the
-  // first pass (see builder.cpp), which must still be right.
-  check_same({torus_points(30000, 5), {}}, 2, 2000, false);
+  // Long cells cross the workers' borders: after the first large pass the construction
+  // takes vertex locks (see builder.cpp), and then the passes insert most points.
+  const Input in{torus_points(30000, 5), {}};
+  check_same(in, 2, 2000, true);
+  // With fixed borders only, it turns sequential instead, which must still be right.
+  const RegularTriangulation3 one = build(in, 1, 2000);
+  const RegularTriangulation3 borders = build(in, 2, 2000, Scheme::borders);
+  CHECK(cell_set(borders) == cell_set(one));
+  CHECK(borders.stats().deferred_points * 4 > borders.stats().parallel_points);
+}
+
+TEST_CASE("parallel insertion with locks: weighted points on a surface, some hidden") {
+  const std::size_t n = 30000;
+  Input in{torus_points(n, 12), rstruct::test::hiding_weights(n, 2e-3, 13)};
+  const RegularTriangulation3 t = build(in, 2, 2000, Scheme::locks);
+  CHECK(t.hidden_points().size() > 100);
+  check_same(in, 2, 2000, true);
+  check_same(in, 3, 2000, true);
+}
+
+TEST_CASE("parallel insertion with locks: uniform points, a grid, duplicates") {
+  Input in{rstruct::test::uniform_points(30000, 14), {}};
+  rstruct::test::Random r(15);
+  for (int i = 0; i < 3000; ++i) {
+    in.points.push_back(in.points[static_cast<std::size_t>(r.integer(0, 29999))]);
+  }
+  for (const Input& input : {in, Input{rstruct::test::grid_points(24, 24, 24), {}}}) {
+    const RegularTriangulation3 one = build(input, 1, 2000);
+    const RegularTriangulation3 locks = build(input, 2, 2000, Scheme::locks);
+    const auto report = locks.is_valid();
+    INFO(report.message);
+    REQUIRE(report.ok);
+    CHECK(cell_set(locks) == cell_set(one));
+    CHECK(hidden_ids(locks) == hidden_ids(one));
+    CHECK(duplicate_pairs(locks) == duplicate_pairs(one));
+    CHECK(locks.stats().deferred_points * 10 < locks.stats().parallel_points);
+  }
 }
 
 TEST_CASE("parallel insertion: weighted points, some hidden") {
@@ -113,20 +187,30 @@ TEST_CASE("parallel insertion: exact duplicates") {
   check_same(in, 2, 2000, true);
 }
 
-TEST_CASE("parallel insertion does not depend on timing") {
-  const Input in{torus_points(30000, 6), {}};
-  const RegularTriangulation3 a = build(in, 2, 2000);
-  const RegularTriangulation3 b = build(in, 2, 2000);
-  REQUIRE(a.cell_capacity() == b.cell_capacity());
-  bool same = true;
-  for (rstruct::triangulation::CellId c = 0; c < a.cell_capacity(); ++c) {
-    same = same && a.is_cell(c) == b.is_cell(c) &&
-           (!a.is_cell(c) || a.vertices(c) == b.vertices(c));
-    for (int i = 0; i < 4 && same && a.is_cell(c); ++i) {
-      same = a.neighbor(c, i) == b.neighbor(c, i);
+TEST_CASE("parallel insertion with fixed borders does not depend on timing") {
+  const Input in{rstruct::test::uniform_points(30000, 6), {}};
+  const RegularTriangulation3 a = build(in, 2, 2000, Scheme::borders);
+  const RegularTriangulation3 b = build(in, 2, 2000, Scheme::borders);
+  CHECK(same_cell_array(a, b));
+}
+
+TEST_CASE("the canonical order: the same cell array for every thread count and run") {
+  const std::size_t n = 20000;
+  for (const Input& in : {Input{torus_points(n, 16), {}},
+                          Input{torus_points(n, 17), rstruct::test::hiding_weights(n, 2e-3, 18)}}) {
+    const RegularTriangulation3 one = build(in, 1, 2000, Scheme::automatic, true);
+    const auto report = one.is_valid();
+    INFO(report.message);
+    REQUIRE(report.ok);
+    CHECK(is_canonical(one));
+    CHECK(cell_set(one) == cell_set(build(in, 1, 2000)));
+    CHECK(hidden_ids(one) == hidden_ids(build(in, 1, 2000)));
+    for (const unsigned threads : {2u, 3u}) {
+      const RegularTriangulation3 many = build(in, threads, 2000, Scheme::locks, true);
+      CHECK(same_cell_array(many, one));
+      CHECK(hidden_ids(many) == hidden_ids(one));
     }
   }
-  CHECK(same);
 }
 
 TEST_CASE("parallel insertion equals sequential on degenerate inputs") {
@@ -147,15 +231,21 @@ TEST_CASE("parallel insertion equals sequential on degenerate inputs") {
         in.weights = rstruct::test::hiding_weights(n, 0.01, seed ^ 3);
         break;
     }
+    const bool locks = *rc::gen::arbitrary<bool>();
+    RC_TAG(locks ? "locks" : "borders");
     TriangulationOptions sequential;
+    sequential.canonical_order = true;
     TriangulationOptions parallel;
     parallel.threads = threads;
     parallel.parallel_min_round = 100;
+    parallel.parallel_scheme = locks ? Scheme::locks : Scheme::borders;
+    parallel.canonical_order = true;
     const RegularTriangulation3 one = rstruct::test::build(in, sequential);
     const RegularTriangulation3 many = rstruct::test::build(in, parallel);
     const auto report = many.is_valid();
     RC_ASSERT(report.ok);
-    RC_ASSERT(cell_set(many) == cell_set(one));
+    RC_ASSERT(is_canonical(many));
+    RC_ASSERT(same_cell_array(many, one));
     RC_ASSERT(hidden_ids(many) == hidden_ids(one));
     RC_ASSERT(duplicate_pairs(many) == duplicate_pairs(one));
   });

@@ -187,7 +187,12 @@ class AlmostStaticFilter {
   /// The two stages of insphere_filter_two_stage (kWeighted false: the weights are
   /// ignored) and power_test_filter_two_stage: the expressions of
   /// detail::lifted4_filter_points<kWeighted>, with the static bound tried first.
+  /// Always inlined: the conflict search evaluates it for every cell it visits (left to
+  /// itself, GCC stopped inlining it into the parallel pass's search, which then took 2x).
   template <bool kWeighted>
+#if defined(__GNUC__)
+  __attribute__((always_inline))
+#endif
   int lifted_two_stage(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                        const Point3& e, double aw, double bw, double cw, double dw,
                        double ew) const {
