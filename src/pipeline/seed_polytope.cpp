@@ -305,7 +305,9 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
     centres.push_back(samples[s]);
     weights.push_back(surface[s].r * surface[s].r);
   }
-  const RegularTriangulation3 rt(std::move(centres), std::move(weights));
+  triangulation::TriangulationOptions rt_options;
+  rt_options.threads = options.threads;
+  const RegularTriangulation3 rt(std::move(centres), std::move(weights), rt_options);
   out.hidden_balls = rt.hidden_points().size() + rt.duplicate_points().size();
   rt_stage.finish();
 

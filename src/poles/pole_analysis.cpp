@@ -1,5 +1,6 @@
 #include "rstruct/poles/pole_analysis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <sstream>
@@ -36,7 +37,13 @@ struct Soup {
 Soup soup_of(const triangulation::RegularTriangulation3& dt, std::size_t sample_count) {
   Soup soup;
   soup.tets.reserve(dt.number_of_finite_cells());
-  dt.for_each_finite_cell([&](triangulation::CellId c) { soup.tets.push_back(dt.vertices(c)); });
+  // Vertex ids sorted: a tetrahedron's circumcentre is computed from the same vertex order
+  // whatever the triangulation stored (with parallel insertion, that depends on timing).
+  dt.for_each_finite_cell([&](triangulation::CellId c) {
+    std::array<std::uint32_t, 4> q = dt.vertices(c);
+    std::sort(q.begin(), q.end());
+    soup.tets.push_back(q);
+  });
   soup.representative.resize(sample_count);
   for (std::uint32_t s = 0; s < sample_count; ++s) soup.representative[s] = s;
   for (const auto& d : dt.duplicate_points()) {
@@ -97,7 +104,9 @@ PoleAnalysis analyse_poles(std::span<const Point3> samples, const PoleAnalysisOp
   Soup soup;
   {
     Report::Stage stage(r, "delaunay");
-    const triangulation::RegularTriangulation3 dt(std::move(sites));
+    triangulation::TriangulationOptions dt_options;
+    dt_options.threads = options.threads;
+    const triangulation::RegularTriangulation3 dt(std::move(sites), dt_options);
     soup = soup_of(dt, samples.size());
     analysis.duplicate_samples = dt.duplicate_points().size();
     sites.assign(dt.points().begin(), dt.points().end());

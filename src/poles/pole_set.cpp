@@ -69,6 +69,19 @@ struct Choice {
   std::vector<Vec3> first_direction;
 };
 
+/// Whether tetrahedron t wins a tie in the circumradius against `current` (kNoTet: no
+/// tetrahedron yet): the one whose vertex ids, sorted, come first lexicographically. So
+/// the choice does not depend on the order of the soup (the Delaunay triangulation's cell
+/// numbering, which parallel insertion does not fix).
+bool wins_tie(const TetrahedronSoup& soup, std::uint32_t t, std::uint32_t current) {
+  if (current == kNoTet) return true;
+  std::array<std::uint32_t, 4> a = soup.tets[t];
+  std::array<std::uint32_t, 4> b = soup.tets[current];
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  return a < b;
+}
+
 /// p⁺ of the samples [lo, hi).
 void choose_first_poles(const TetrahedronSoup& soup, Choice& choice, std::uint32_t lo,
                         std::uint32_t hi) {
@@ -76,7 +89,9 @@ void choose_first_poles(const TetrahedronSoup& soup, Choice& choice, std::uint32
     const auto& q = soup.tets[t];
     const detail::Circumsphere& cs = choice.spheres[t];
     for (const std::uint32_t s : q) {
-      if (s >= lo && s < hi && cs.squared_radius > choice.first_r2[s]) {
+      if (s >= lo && s < hi &&
+          (cs.squared_radius > choice.first_r2[s] ||
+           (cs.squared_radius == choice.first_r2[s] && wins_tie(soup, t, choice.first[s])))) {
         choice.first_r2[s] = cs.squared_radius;
         choice.first[s] = t;
         choice.first_direction[s] = (soup.vertices[q[0]] - soup.vertices[s]) + cs.offset;
@@ -93,7 +108,10 @@ void choose_second_poles(const TetrahedronSoup& soup, Choice& choice, std::uint3
     const detail::Circumsphere& cs = choice.spheres[t];
     for (const std::uint32_t s : q) {
       if (s < lo || s >= hi || choice.first[s] == t) continue;
-      if (cs.squared_radius <= choice.second_r2[s]) continue;
+      if (cs.squared_radius < choice.second_r2[s] ||
+          (cs.squared_radius == choice.second_r2[s] && !wins_tie(soup, t, choice.second[s]))) {
+        continue;
+      }
       const Vec3 direction = (soup.vertices[q[0]] - soup.vertices[s]) + cs.offset;
       if (dot(direction, choice.first_direction[s]) < 0) {
         choice.second_r2[s] = cs.squared_radius;
@@ -131,25 +149,22 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
     choose_second_poles(soup, choice, lo, hi);
   });
 
-  // Distinct poles, numbered in tetrahedron order.
+  // Distinct poles, numbered in the order of their owners (the smallest sample having
+  // them as a pole), p⁺ before p⁻: not in the order of the soup.
   std::vector<std::uint32_t> pole_of_tet(soup.tets.size(), kNoPole);
-  std::vector<std::uint32_t> owner_of_tet(soup.tets.size(), kNoPole);
-  for (std::uint32_t s = 0; s < n; ++s) {
-    for (const std::uint32_t t : {choice.first[s], choice.second[s]}) {
-      if (t != kNoTet && owner_of_tet[t] == kNoPole) owner_of_tet[t] = s;
-    }
-  }
   PoleSet poles;
   poles.sample_count = n;
-  for (std::uint32_t t = 0; t < soup.tets.size(); ++t) {
-    if (owner_of_tet[t] == kNoPole) continue;
-    pole_of_tet[t] = static_cast<std::uint32_t>(poles.size());
-    const detail::Circumsphere& cs = choice.spheres[t];
-    poles.centre.push_back(soup.vertices[soup.tets[t][0]] + cs.offset);
-    poles.radius.push_back(std::sqrt(cs.squared_radius));
-    poles.tet.push_back(t);
-    poles.sites.push_back(soup.tets[t]);
-    poles.owner.push_back(owner_of_tet[t]);
+  for (std::uint32_t s = 0; s < n; ++s) {
+    for (const std::uint32_t t : {choice.first[s], choice.second[s]}) {
+      if (t == kNoTet || pole_of_tet[t] != kNoPole) continue;
+      pole_of_tet[t] = static_cast<std::uint32_t>(poles.size());
+      const detail::Circumsphere& cs = choice.spheres[t];
+      poles.centre.push_back(soup.vertices[soup.tets[t][0]] + cs.offset);
+      poles.radius.push_back(std::sqrt(cs.squared_radius));
+      poles.tet.push_back(t);
+      poles.sites.push_back(soup.tets[t]);
+      poles.owner.push_back(s);
+    }
   }
   poles.label.assign(poles.size(), PoleLabel::unlabelled);
   poles.sample_poles.resize(n);

@@ -208,3 +208,31 @@ TEST_CASE("every sample maps to the output vertex of smallest power distance") {
                                                         ball(expected)) == rstruct::Sign::zero);
   }
 }
+
+TEST_CASE("the seed polytope does not depend on the threads of its triangulations") {
+  // 24,000 samples of a torus: the Delaunay triangulation of the pole analysis and the
+  // regular triangulation of the balls both insert in parallel, with vertex locks, so
+  // their cell ids depend on timing; nothing in the output may.
+  rstruct::sampling::SampleRequest request;
+  request.shape = "torus";
+  request.n = 24000;
+  request.seed = 3;
+  const auto samples = rstruct::sampling::generate_sample(request).points;
+  SeedOptions options;
+  options.rho = 0.4;
+  options.rho_tilde = 0;
+  options.threads = 1;
+  const SeedPolytope one = rstruct::pipeline::compute_seed_polytope(samples, options);
+  check_structure(samples, one);
+  CHECK(one.betti_output == rstruct::complex::BettiNumbers{{1, 2, 1, 0}});
+  for (const unsigned threads : {2u, 2u}) {
+    options.threads = threads;
+    const SeedPolytope many = rstruct::pipeline::compute_seed_polytope(samples, options);
+    CHECK(many.kept == one.kept);
+    CHECK(many.vertex_sample == one.vertex_sample);
+    CHECK(many.triangles == one.triangles);
+    CHECK(many.sample_vertex == one.sample_vertex);
+    CHECK(many.k_counts == one.k_counts);
+    CHECK(many.facet_classes == one.facet_classes);
+  }
+}

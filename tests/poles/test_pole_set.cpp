@@ -2,6 +2,7 @@
 
 #include "rstruct/poles/pole_set.hpp"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <gmpxx.h>
@@ -160,5 +161,59 @@ TEST_CASE("the poles do not depend on the threads choosing them") {
     CHECK(many.sample_poles == one.sample_poles);
     CHECK(many.centre == one.centre);
     CHECK(many.radius == one.radius);
+  }
+}
+
+TEST_CASE("the poles do not depend on the order of the soup; ties go to the smallest ids") {
+  // A parallel Delaunay triangulation numbers its cells by timing: the same tetrahedra in
+  // another order must give the same poles, with the same numbers.
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> coordinate(-1, 1);
+  std::uniform_int_distribution<std::uint32_t> vertex(0, 299);
+  std::vector<Point3> vertices(300);
+  for (Point3& p : vertices) p = {coordinate(rng), coordinate(rng), coordinate(rng)};
+  std::vector<Tet> tets;
+  while (tets.size() < 3000) {
+    Tet t{vertex(rng), vertex(rng), vertex(rng), vertex(rng)};
+    std::sort(t.begin(), t.end());
+    if (t[0] != t[1] && t[1] != t[2] && t[2] != t[3]) tets.push_back(t);
+  }
+  // Exact ties: the same four vertices listed twice (the second copy wins no tie).
+  for (int i = 0; i < 50; ++i) tets.push_back(tets[static_cast<std::size_t>(i)]);
+  const TetrahedronSoup soup{vertices, 200, tets, {}};
+  const PoleSet one = compute_poles(soup, 1);
+  REQUIRE(one.is_valid());
+  REQUIRE(one.size() > 100);
+  for (std::size_t p = 0; p < one.size(); ++p) CHECK(one.tet[p] < 3000);  // first copies
+  for (std::size_t p = 1; p < one.size(); ++p) CHECK(one.owner[p - 1] <= one.owner[p]);
+  for (int round = 0; round < 3; ++round) {
+    std::vector<Tet> shuffled = tets;
+    std::shuffle(shuffled.begin(), shuffled.end(), rng);
+    const TetrahedronSoup other{vertices, 200, shuffled, {}};
+    const PoleSet many = compute_poles(other, 2);
+    REQUIRE(many.size() == one.size());
+    CHECK(many.owner == one.owner);
+    CHECK(many.sites == one.sites);
+    CHECK(many.sample_poles == one.sample_poles);
+    CHECK(many.centre == one.centre);
+    CHECK(many.radius == one.radius);
+  }
+}
+
+TEST_CASE("a tie in the circumradius goes to the tetrahedron with the smaller sorted ids") {
+  // Sample 0 at the origin and two mirrored corner tetrahedra: equal circumradii (exactly:
+  // the offsets are (±1/2, ±1/2, ±1/2)), listed in either order.
+  Star star;
+  star.add_corner_tet(1);   // vertices 1, 2, 3
+  star.add_corner_tet(-1);  // vertices 4, 5, 6
+  const Tet low = star.tets[0];
+  const Tet high = star.tets[1];
+  for (const std::vector<Tet>& tets : {std::vector<Tet>{low, high}, std::vector<Tet>{high, low}}) {
+    const TetrahedronSoup soup{star.vertices, 1, tets, {}};
+    const PoleSet poles = compute_poles(soup, 1);
+    REQUIRE(poles.sample_poles[0][0] != kNoPole);
+    CHECK(poles.sites[poles.sample_poles[0][0]] == low);
+    REQUIRE(poles.sample_poles[0][1] != kNoPole);
+    CHECK(poles.sites[poles.sample_poles[0][1]] == high);
   }
 }

@@ -14,7 +14,11 @@
 /// Approximations (documented, DESIGN.md §0): circumcentres are rounded doubles
 /// (see src/poles/circumsphere.hpp); the choice of the farthest vertex and the sign of
 /// (v − s)·(p⁺ − s) are evaluated on those doubles. Ties in the circumradius go to the
-/// tetrahedron listed first.
+/// tetrahedron whose sorted vertex ids come first lexicographically, and poles are
+/// numbered in the order of their owners (p⁺ before p⁻), so the poles do not depend on
+/// the order in which the soup lists the tetrahedra. The circumcentre is computed from a
+/// tetrahedron's vertices in the order listed: analyse_poles lists them sorted, so that
+/// nothing depends on the triangulation's cell numbering.
 
 #include <array>
 #include <cstdint>
