@@ -64,7 +64,7 @@ class Builder {
   CellId walk_owned(const Point3& q, CellId start, bool& blocked);
   CellId walk_owned_steps(const Point3& q, CellId start, bool& blocked);
   /// With locks: keeps only the locks of cell c, which becomes the start of the next walk.
-  void keep_walk_end_locks(CellId c);
+  void keep_cell_locks(CellId c);
   /// The infinite vertex counts as every worker's: two workers still never share three
   /// vertices of a cell (see insert_round_in_parallel). In a pass with locks, a vertex
   /// is the worker's once it holds its lock: owned() then tries to take it.
@@ -89,9 +89,6 @@ class Builder {
   }
   /// Releases the locks taken since the last kept star (an abandoned insertion).
   void unlock_attempt();
-  /// After an insertion: keeps the locks of the new star's vertices (where the next walk
-  /// starts), releases the others.
-  void keep_star_locks(VertexId p);
   /// Releases every lock of this worker (end of a pass).
   void unlock_all();
   /// A pass with locks: worker w's first point whose cell it can lock, from lists[w][..64].
@@ -252,6 +249,7 @@ class Builder {
   std::vector<VertexId> locked_;           // locks held, those of the kept star first
   std::size_t kept_locks_ = 0;             // locked_[0, kept_locks_): the kept star's
   VertexId walk_point_ = kInfiniteVertex;  // the point being inserted
+  VertexId next_point_ = kInfiniteVertex;  // the worker's next point, if any
   bool in_region_ = false;                 // new cells come from [region_next_, region_end_)
   CellId region_next_ = 0;
   CellId region_end_ = 0;

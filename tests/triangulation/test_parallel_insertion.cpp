@@ -187,6 +187,39 @@ TEST_CASE("parallel insertion: exact duplicates") {
   check_same(in, 2, 2000, true);
 }
 
+TEST_CASE("points inserted last (bounding-box corners) give the same triangulation") {
+  Input in{torus_points(20000, 19), {}};
+  for (int k = 0; k < 8; ++k) {
+    in.points.push_back({(k & 1) != 0 ? 4.0 : -4.0, (k & 2) != 0 ? 4.0 : -4.0,
+                         (k & 4) != 0 ? 4.0 : -4.0});
+  }
+  const RegularTriangulation3 one = build(in, 1, 2000);
+  for (const unsigned threads : {1u, 2u}) {
+    TriangulationOptions options;
+    options.threads = threads;
+    options.parallel_min_round = 2000;
+    options.insert_last = 8;
+    const RegularTriangulation3 last = rstruct::test::build(in, options);
+    const auto report = last.is_valid();
+    INFO(report.message);
+    REQUIRE(report.ok);
+    CHECK(cell_set(last) == cell_set(one));
+    if (threads > 1) CHECK(last.stats().parallel_points > in.points.size() / 2);
+  }
+  // And they are the last ones inserted (after_insertion sees the insertion order).
+  Input small{torus_points(300, 20), {}};
+  small.points.insert(small.points.end(), in.points.end() - 8, in.points.end());
+  TriangulationOptions options;
+  options.insert_last = 8;
+  std::vector<std::uint32_t> order;
+  options.after_insertion = [&](const RegularTriangulation3&, std::uint32_t p) {
+    order.push_back(p);
+  };
+  rstruct::test::build(small, options);
+  REQUIRE(order.size() == 308);
+  for (std::size_t i = 300; i < 308; ++i) CHECK(order[i] >= 300);
+}
+
 TEST_CASE("parallel insertion with fixed borders does not depend on timing") {
   const Input in{rstruct::test::uniform_points(30000, 6), {}};
   const RegularTriangulation3 a = build(in, 2, 2000, Scheme::borders);
