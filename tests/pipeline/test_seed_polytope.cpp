@@ -55,6 +55,16 @@ void check_structure(const std::vector<rstruct::Point3>& samples, const SeedPoly
   CHECK(self_mapped >= seed.vertex_sample.size() * 9 / 10);
 }
 
+/// The same kept balls, output mesh, sample map and dual complex counts.
+void check_same_output(const SeedPolytope& a, const SeedPolytope& b) {
+  CHECK(a.kept == b.kept);
+  CHECK(a.vertex_sample == b.vertex_sample);
+  CHECK(a.triangles == b.triangles);
+  CHECK(a.sample_vertex == b.sample_vertex);
+  CHECK(a.k_counts == b.k_counts);
+  CHECK(a.facet_classes == b.facet_classes);
+}
+
 }  // namespace
 
 TEST_CASE("sphere: K and the output have the sphere's Betti numbers") {
@@ -126,12 +136,7 @@ TEST_CASE("levels share one pole analysis; results do not depend on it or on thr
   options.threads = 3;
   const SeedPolytope shared =
       rstruct::pipeline::compute_seed_polytope(samples, analysis, options);
-  CHECK(shared.kept == alone.kept);
-  CHECK(shared.vertex_sample == alone.vertex_sample);
-  CHECK(shared.triangles == alone.triangles);
-  CHECK(shared.sample_vertex == alone.sample_vertex);
-  CHECK(shared.k_counts == alone.k_counts);
-  CHECK(shared.facet_classes == alone.facet_classes);
+  check_same_output(shared, alone);
   CHECK(shared.betti_output == rstruct::complex::BettiNumbers{{1, 2, 1, 0}});
 
   options.rho_tilde = 0.03;
@@ -228,11 +233,6 @@ TEST_CASE("the seed polytope does not depend on the threads of its triangulation
   for (const unsigned threads : {2u, 2u}) {
     options.threads = threads;
     const SeedPolytope many = rstruct::pipeline::compute_seed_polytope(samples, options);
-    CHECK(many.kept == one.kept);
-    CHECK(many.vertex_sample == one.vertex_sample);
-    CHECK(many.triangles == one.triangles);
-    CHECK(many.sample_vertex == one.sample_vertex);
-    CHECK(many.k_counts == one.k_counts);
-    CHECK(many.facet_classes == one.facet_classes);
+    check_same_output(many, one);
   }
 }

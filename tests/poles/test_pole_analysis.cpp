@@ -48,6 +48,20 @@ std::vector<Key> keys(const rstruct::poles::PoleSet& poles, double scale = 1.0) 
   return k;
 }
 
+/// n random points (uniform in the angles) on the torus with radii 3 and 1.
+std::vector<Point3> torus_samples(int n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> angle(0.0, 2 * std::numbers::pi);
+  std::vector<Point3> samples;
+  for (int i = 0; i < n; ++i) {
+    const double u = angle(rng);
+    const double v = angle(rng);
+    samples.push_back({(3 + std::cos(v)) * std::cos(u), (3 + std::cos(v)) * std::sin(u),
+                       std::sin(v)});
+  }
+  return samples;
+}
+
 }  // namespace
 
 TEST_CASE("box sites are centred on the data, also far from the origin") {
@@ -167,15 +181,7 @@ TEST_CASE("D̂ seeded with the own poles equals the plain kd-tree and the brute 
 TEST_CASE("labels and D̂ are the same whether they run side by side or one after the other") {
   // With two or more threads the labelling runs beside the D̂ queries: a data race or a
   // mix-up of the two would show as a difference from the sequential run.
-  std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> angle(0.0, 2 * std::numbers::pi);
-  std::vector<Point3> samples;
-  for (int i = 0; i < 3000; ++i) {
-    const double u = angle(rng);
-    const double v = angle(rng);
-    samples.push_back({(3 + std::cos(v)) * std::cos(u), (3 + std::cos(v)) * std::sin(u),
-                       std::sin(v)});
-  }
+  const std::vector<Point3> samples = torus_samples(3000, 7);
   PoleAnalysisOptions one;
   one.threads = 1;
   const auto sequential = analyse_poles(samples, one);
@@ -201,15 +207,7 @@ TEST_CASE("the pole analysis does not depend on the threads of its Delaunay tria
   // 24,000 samples: BRIO rounds large enough for the parallel passes, which on a surface
   // turn to vertex locks, so the cell ids (and the soup's order) depend on timing. Poles,
   // labels and D̂ must not.
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> angle(0.0, 2 * std::numbers::pi);
-  std::vector<Point3> samples;
-  for (int i = 0; i < 24000; ++i) {
-    const double u = angle(rng);
-    const double v = angle(rng);
-    samples.push_back({(3 + std::cos(v)) * std::cos(u), (3 + std::cos(v)) * std::sin(u),
-                       std::sin(v)});
-  }
+  const std::vector<Point3> samples = torus_samples(24000, 11);
   PoleAnalysisOptions one;
   one.threads = 1;
   const auto sequential = analyse_poles(samples, one);

@@ -36,6 +36,24 @@ struct Star {
   }
 };
 
+/// 300 random vertices in a cube and 3000 random tetrahedra over them (four distinct
+/// vertices; their ids listed increasing if `sorted`).
+std::vector<Tet> random_tetrahedra(std::mt19937_64& rng, std::vector<Point3>& vertices,
+                                   bool sorted) {
+  std::uniform_real_distribution<double> coordinate(-1, 1);
+  std::uniform_int_distribution<std::uint32_t> vertex(0, 299);
+  vertices.resize(300);
+  for (Point3& p : vertices) p = {coordinate(rng), coordinate(rng), coordinate(rng)};
+  std::vector<Tet> tets;
+  while (tets.size() < 3000) {
+    Tet t{vertex(rng), vertex(rng), vertex(rng), vertex(rng)};
+    Tet s = t;
+    std::sort(s.begin(), s.end());
+    if (s[0] != s[1] && s[1] != s[2] && s[2] != s[3]) tets.push_back(sorted ? s : t);
+  }
+  return tets;
+}
+
 }  // namespace
 
 TEST_CASE("first pole is the largest incident circumball, second the largest opposite one") {
@@ -138,18 +156,8 @@ TEST_CASE("circumsphere centres are equidistant from the four vertices, slivers 
 TEST_CASE("the poles do not depend on the threads choosing them") {
   // Random (non-Delaunay, non-flat) tetrahedra over 300 vertices, 200 of them samples.
   std::mt19937_64 rng(17);
-  std::uniform_real_distribution<double> coordinate(-1, 1);
-  std::uniform_int_distribution<std::uint32_t> vertex(0, 299);
-  std::vector<Point3> vertices(300);
-  for (Point3& p : vertices) p = {coordinate(rng), coordinate(rng), coordinate(rng)};
-  std::vector<Tet> tets;
-  while (tets.size() < 3000) {
-    const Tet t{vertex(rng), vertex(rng), vertex(rng), vertex(rng)};
-    if (t[0] != t[1] && t[0] != t[2] && t[0] != t[3] && t[1] != t[2] && t[1] != t[3] &&
-        t[2] != t[3]) {
-      tets.push_back(t);
-    }
-  }
+  std::vector<Point3> vertices;
+  const std::vector<Tet> tets = random_tetrahedra(rng, vertices, false);
   const TetrahedronSoup soup{vertices, 200, tets, {}};
   const PoleSet one = compute_poles(soup, 1);
   REQUIRE(one.is_valid());
@@ -168,16 +176,8 @@ TEST_CASE("the poles do not depend on the order of the soup; ties go to the smal
   // A parallel Delaunay triangulation numbers its cells by timing: the same tetrahedra in
   // another order must give the same poles, with the same numbers.
   std::mt19937_64 rng(23);
-  std::uniform_real_distribution<double> coordinate(-1, 1);
-  std::uniform_int_distribution<std::uint32_t> vertex(0, 299);
-  std::vector<Point3> vertices(300);
-  for (Point3& p : vertices) p = {coordinate(rng), coordinate(rng), coordinate(rng)};
-  std::vector<Tet> tets;
-  while (tets.size() < 3000) {
-    Tet t{vertex(rng), vertex(rng), vertex(rng), vertex(rng)};
-    std::sort(t.begin(), t.end());
-    if (t[0] != t[1] && t[1] != t[2] && t[2] != t[3]) tets.push_back(t);
-  }
+  std::vector<Point3> vertices;
+  std::vector<Tet> tets = random_tetrahedra(rng, vertices, true);
   // Exact ties: the same four vertices listed twice (the second copy wins no tie).
   for (int i = 0; i < 50; ++i) tets.push_back(tets[static_cast<std::size_t>(i)]);
   const TetrahedronSoup soup{vertices, 200, tets, {}};

@@ -114,6 +114,17 @@ std::vector<Point3> torus_points(std::size_t n, std::uint64_t seed) {
   return p;
 }
 
+/// n uniform points (seed) followed by `copies` exact copies of random ones among them.
+Input with_duplicates(std::size_t n, std::uint64_t seed, int copies) {
+  Input in{rstruct::test::uniform_points(n, seed), {}};
+  rstruct::test::Random r(seed + 1);
+  for (int i = 0; i < copies; ++i) {
+    const int which = r.integer(0, static_cast<int>(n) - 1);
+    in.points.push_back(in.points[static_cast<std::size_t>(which)]);
+  }
+  return in;
+}
+
 }  // namespace
 
 TEST_CASE("parallel insertion: uniform points, two and three threads") {
@@ -148,11 +159,7 @@ TEST_CASE("parallel insertion with locks: weighted points on a surface, some hid
 }
 
 TEST_CASE("parallel insertion with locks: uniform points, a grid, duplicates") {
-  Input in{rstruct::test::uniform_points(30000, 14), {}};
-  rstruct::test::Random r(15);
-  for (int i = 0; i < 3000; ++i) {
-    in.points.push_back(in.points[static_cast<std::size_t>(r.integer(0, 29999))]);
-  }
+  const Input in = with_duplicates(30000, 14, 3000);
   for (const Input& input : {in, Input{rstruct::test::grid_points(24, 24, 24), {}}}) {
     const RegularTriangulation3 one = build(input, 1, 2000);
     const RegularTriangulation3 locks = build(input, 2, 2000, Scheme::locks);
@@ -177,11 +184,7 @@ TEST_CASE("parallel insertion: weighted points, some hidden") {
 }
 
 TEST_CASE("parallel insertion: exact duplicates") {
-  Input in{rstruct::test::uniform_points(30000, 8), {}};
-  rstruct::test::Random r(9);
-  for (int i = 0; i < 10000; ++i) {
-    in.points.push_back(in.points[static_cast<std::size_t>(r.integer(0, 29999))]);
-  }
+  const Input in = with_duplicates(30000, 8, 10000);
   const RegularTriangulation3 t = build(in, 2, 2000);
   CHECK(t.duplicate_points().size() >= 8000);
   check_same(in, 2, 2000, true);
