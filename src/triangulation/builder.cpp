@@ -100,13 +100,12 @@ Builder::Builder(const Builder& main, std::uint8_t worker)
 void Builder::run() {
   const std::size_t n = t_.points_.size();
   Stopwatch clock;
+  // Input ids from first_last on are inserted after all the others (insert_last).
+  const std::size_t first_last = n - std::min(options_.insert_last, n);
   if (options_.spatial_sort) {
     t_.order_ = brio_order(t_.points_, options_.seed);
-    if (options_.insert_last > 0) {
-      const std::size_t first_last = n - std::min(options_.insert_last, n);
-      std::stable_partition(t_.order_.begin(), t_.order_.end(),
-                            [&](VertexId v) { return v < first_last; });
-    }
+    std::stable_partition(t_.order_.begin(), t_.order_.end(),
+                          [&](VertexId v) { return v < first_last; });
   } else {
     t_.order_.resize(n);
     std::iota(t_.order_.begin(), t_.order_.end(), 0u);
@@ -161,9 +160,7 @@ void Builder::run() {
     t_.stats_.threads = workers_;
     // The points to insert last (TriangulationOptions::insert_last) stay out of the rounds.
     std::size_t rounds_end = n;
-    while (rounds_end > 4 && t_.order_[rounds_end - 1] >= n - std::min(options_.insert_last, n)) {
-      --rounds_end;
-    }
+    while (rounds_end > 4 && t_.order_[rounds_end - 1] >= first_last) --rounds_end;
     for (std::size_t k = 4; k < rounds_end;) {
       std::size_t end = k + 1;
       while (end < rounds_end && keys_[end] >= keys_[end - 1]) ++end;
@@ -238,11 +235,12 @@ void Builder::insert_sequentially(std::size_t begin, std::size_t end, std::size_
 // no cell is accessed by two workers at once, now at every moment instead of for the
 // whole pass: a cell is read only with three of its vertices locked, written only with
 // four (or three, for the neighbour link of a cell outside the cavity), and a lock is
-// released only between two insertions, with release/acquire ordering. After an
-// insertion the worker keeps the locks of the new star's vertices, where its next walk
-// starts, and releases the others. Double torus, 85,237 points, two workers: 1 % deferred
-// (fixed borders: 53 %). The cell ids then depend on timing (the triangulation does
-// not): TriangulationOptions::canonical_order renumbers them.
+// released only between two insertions, with release/acquire ordering. Between two
+// points a worker keeps only the locks of the cell where its next walk starts (see
+// keep_cell_locks). Double torus, 85,237 points and the pole analysis's box corners
+// (inserted last), two workers: 1-6 % deferred (fixed borders: 53 %). The cell ids then
+// depend on timing (the triangulation does not): TriangulationOptions::canonical_order
+// renumbers them.
 void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
   const unsigned k = workers_;
   // Pass 1: stretches of the Hilbert curve (the round is sorted along it).
@@ -267,19 +265,13 @@ void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
     lists[w].resize(first[w + 1] - first[w]);
     for (std::size_t r = first[w]; r < first[w + 1]; ++r) lists[w][r - first[w]] = vertex_at(r);
   }
-  if (use_locks_) {
-    // Surfaces: a worker takes the locks of the vertices it meets (see above).
+  // Surfaces, after a pass with fixed borders deferred too much: locks (see above).
+  const bool locking = use_locks_;
+  if (locking) {
     std::fill(owner_store_.begin(), owner_store_.begin() + static_cast<std::ptrdiff_t>(end),
               std::uint8_t{0});
-    std::vector<VertexId> deferred = parallel_pass(lists, begin, true);
-    t_.stats_.parallel_points += end - begin;
-    if (deferred.size() * 4 > end - begin && end - begin >= 4096 * k) parallel_futile_ = true;
-    for (const VertexId p : deferred) insert(p);
-    t_.stats_.deferred_points += deferred.size();
-    t_.processed_ = end;
-    return;
   }
-  std::vector<VertexId> deferred = parallel_pass(lists, begin, false);
+  std::vector<VertexId> deferred = parallel_pass(lists, begin, locking);
   t_.stats_.parallel_points += end - begin;
   // Points on a surface make long cells (their Delaunay balls approximate medial balls:
   // cells across the hole of a torus join points all around it), which cross every border:
@@ -290,7 +282,7 @@ void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
   // (10^6 uniform: 5 %), more in small rounds (the borders are a larger share): those are
   // not judged.
   if (deferred.size() * 4 > end - begin && end - begin >= 4096 * k) {
-    if (options_.parallel_scheme == TriangulationOptions::ParallelScheme::borders) {
+    if (locking || options_.parallel_scheme == TriangulationOptions::ParallelScheme::borders) {
       parallel_futile_ = true;
     } else {
       use_locks_ = true;
@@ -536,7 +528,6 @@ void Builder::choose_locked_start(const std::vector<VertexId>& list, std::size_t
 
 bool Builder::insert_owned(VertexId p) {
   if (!owned(p)) return false;
-  walk_point_ = p;
   duplicate_of_ = kInfiniteVertex;
   bool conflict = false;
   bool blocked = false;
@@ -584,15 +575,6 @@ void Builder::clear_conflict_marks() {
 // vertex), so it never reads a cell another worker may be changing. Same moves otherwise:
 // the segment from the start cell's centroid first, then the facets in random order, each
 // move decided by an exact orientation.
-CellId Builder::walk_owned(const Point3& q, CellId start, bool& blocked) {
-  const CellId c = walk_owned_steps(q, start, blocked);
-  if (locking_ && c != start) {
-    keep_cell_locks(c);
-    lock(walk_point_);  // released with the others if the insertion is deferred
-  }
-  return c;
-}
-
 // With locks, a worker keeps between two points only the locks of one cell, where its
 // next walk starts: after an insertion the new cell nearest to the next point, after a
 // walk the cell it ended in, even if the insertion is then deferred. (When the start
@@ -617,7 +599,7 @@ void Builder::keep_cell_locks(CellId c) {
   star_is_latest_ = true;
 }
 
-CellId Builder::walk_owned_steps(const Point3& q, CellId start, bool& blocked) {
+CellId Builder::walk_owned(const Point3& q, CellId start, bool& blocked) {
   const auto& cells = t_.cells_;
   CellId c = start;
   CellId previous = kNoCell;
@@ -1056,6 +1038,10 @@ CellId Builder::locate_conflict(VertexId p, bool& conflict, bool* blocked) {
                        ? walk_owned(points_[p], start, *blocked)
                        : t_.walk(points_[p], start, rng_, stats.walk_steps, stats.orient_calls,
                                  &*box_filter_);
+  if (locking_ && c != start) {
+    keep_cell_locks(c);
+    lock(p);  // released with the others if the insertion is deferred
+  }
   if (blocked != nullptr && *blocked) return c;
   ++stats.power_test_calls;
   conflict = c == start ? false : in_conflict(c, p);

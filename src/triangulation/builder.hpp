@@ -62,7 +62,6 @@ class Builder {
   void run_worker(const std::vector<VertexId>& list, std::size_t from, CellId start);
   /// Walk through owned cells only (see walk()); `blocked` when the next cell is not owned.
   CellId walk_owned(const Point3& q, CellId start, bool& blocked);
-  CellId walk_owned_steps(const Point3& q, CellId start, bool& blocked);
   /// With locks: keeps only the locks of cell c, which becomes the start of the next walk.
   void keep_cell_locks(CellId c);
   /// The infinite vertex counts as every worker's: two workers still never share three
@@ -248,7 +247,6 @@ class Builder {
   bool use_locks_ = false;                 // main: rounds after a futile pass take locks
   std::vector<VertexId> locked_;           // locks held, those of the kept star first
   std::size_t kept_locks_ = 0;             // locked_[0, kept_locks_): the kept star's
-  VertexId walk_point_ = kInfiniteVertex;  // the point being inserted
   VertexId next_point_ = kInfiniteVertex;  // the worker's next point, if any
   bool in_region_ = false;                 // new cells come from [region_next_, region_end_)
   CellId region_next_ = 0;
