@@ -188,7 +188,8 @@ class AlmostStaticFilter {
   /// ignored) and power_test_filter_two_stage: the expressions of
   /// detail::lifted4_filter_points<kWeighted>, with the static bound tried first.
   /// Always inlined: the conflict search evaluates it for every cell it visits (left to
-  /// itself, GCC stopped inlining it into the parallel pass's search, which then took 2x).
+  /// itself, GCC stopped inlining it into the parallel passes' search: double torus on two
+  /// threads 0.46 s, inlined 0.35 s).
   template <bool kWeighted>
 #if defined(__GNUC__)
   __attribute__((always_inline))
