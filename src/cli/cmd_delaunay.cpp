@@ -15,7 +15,6 @@
 #include "cli/command.hpp"
 #include "rstruct/core/atomic_file.hpp"
 #include "rstruct/core/error.hpp"
-#include "rstruct/core/parallel.hpp"
 #include "rstruct/core/stopwatch.hpp"
 #include "rstruct/io/mesh_io.hpp"
 #include "rstruct/triangulation/regular_triangulation_3.hpp"
@@ -49,12 +48,13 @@ class DelaunayCommand : public Command {
     app.add_option("--threads", threads_,
                    "Insertion threads (0: all cores). The tetrahedra are the same for any "
                    "count (10^6 uniform points: 1.4x on 2 cores; points on a surface: "
-                   "1.4x). With more than one, the .ele file lists them in the canonical "
-                   "order (see --canonical), so that it does not depend on timing")
+                   "1.3x). Their order in the .ele file depends on the count; on a surface, "
+                   "where the threads take locks, it is the canonical order (see "
+                   "--canonical), so that it does not depend on timing")
         ->capture_default_str();
     app.add_flag("--canonical", canonical_,
-                 "List the tetrahedra in the canonical order (by vertex ids) with one "
-                 "thread too: the same .ele file for every thread count");
+                 "List the tetrahedra in the canonical order (by vertex ids) in every case: "
+                 "the same .ele file for every thread count");
   }
 
   int run(Context& context) override {
@@ -79,7 +79,8 @@ class DelaunayCommand : public Command {
 
     triangulation::TriangulationOptions options;
     options.threads = threads_;
-    options.canonical_order = canonical_ || thread_count(threads_, n) > 1;
+    options.canonical_order = canonical_;
+    options.canonical_order_after_locks = true;
     const RegularTriangulation3 t =
         weighted_ ? RegularTriangulation3(std::move(mesh.vertices), std::move(weights), options)
                   : RegularTriangulation3(std::move(mesh.vertices), options);

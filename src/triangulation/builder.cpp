@@ -190,7 +190,9 @@ void Builder::run() {
   vertex_mark_.clear();
   vertex_mark_.shrink_to_fit();
   if (reorder_) restore_input_order();
-  if (options_.canonical_order) canonicalize_cells();
+  if (options_.canonical_order || (options_.canonical_order_after_locks && took_locks_)) {
+    canonicalize_cells();
+  }
   t_.order_.clear();
   t_.order_.shrink_to_fit();
   t_.finalize(raw_hidden_);
@@ -267,6 +269,7 @@ void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
   }
   // Surfaces, after a pass with fixed borders deferred too much: locks (see above).
   const bool locking = use_locks_;
+  took_locks_ = took_locks_ || locking;
   if (locking) {
     std::fill(owner_store_.begin(), owner_store_.begin() + static_cast<std::ptrdiff_t>(end),
               std::uint8_t{0});
@@ -286,6 +289,7 @@ void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
       parallel_futile_ = true;
     } else {
       use_locks_ = true;
+      took_locks_ = true;
       for (unsigned w = 0; w < k; ++w) lists[w].clear();
       for (const VertexId p : deferred) lists[owner_store_[p]].push_back(p);  // rank order
       std::fill(owner_store_.begin(), owner_store_.begin() + static_cast<std::ptrdiff_t>(end),

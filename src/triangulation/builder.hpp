@@ -245,6 +245,7 @@ class Builder {
   std::uint8_t worker_ = 0;
   bool locking_ = false;                   // this pass takes vertex locks
   bool use_locks_ = false;                 // main: rounds after a futile pass take locks
+  bool took_locks_ = false;                // main: a pass took locks (cell ids by timing)
   std::vector<VertexId> locked_;           // locks held, those of the kept star first
   std::size_t kept_locks_ = 0;             // locked_[0, kept_locks_): the kept star's
   VertexId next_point_ = kInfiniteVertex;  // the worker's next point, if any

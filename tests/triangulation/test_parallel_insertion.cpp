@@ -246,6 +246,14 @@ TEST_CASE("the canonical order: the same cell array for every thread count and r
       CHECK(same_cell_array(many, one));
       CHECK(hidden_ids(many) == hidden_ids(one));
     }
+    // Only after passes with locks: renumbered when locks were taken, not otherwise.
+    TriangulationOptions options;
+    options.threads = 2;
+    options.parallel_min_round = 2000;
+    options.canonical_order_after_locks = true;
+    CHECK(same_cell_array(rstruct::test::build(in, options), one));
+    options.parallel_scheme = Scheme::borders;
+    CHECK_FALSE(is_canonical(rstruct::test::build(in, options)));
   }
 }
 

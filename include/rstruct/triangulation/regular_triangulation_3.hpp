@@ -143,8 +143,13 @@ struct TriangulationOptions {
   /// the order that keeps the orientation). The cell array then depends only on the
   /// triangulation, not on the insertion order, the number of threads or timing. Costs a
   /// counting sort of the cells (85,237 points on a double torus, 1.17·10^6 cells: about
-  /// 0.08 s) and frees the free cells.
+  /// 0.08 s; 10^6 points on a torus, 2·10^7 cells: about 5 s and twice the cells' memory,
+  /// most of it first-touch page faults on this VM) and frees the free cells.
   bool canonical_order = false;
+  /// The canonical order only where the cell ids would otherwise depend on timing: if a
+  /// parallel pass took locks (what `rstruct delaunay` uses, so that its .ele file is the
+  /// same on every run without paying for the renumbering where it is not needed).
+  bool canonical_order_after_locks = false;
 };
 
 /// Counts and seconds of the construction.
