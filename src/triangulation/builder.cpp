@@ -519,10 +519,7 @@ void Builder::choose_locked_start(const std::vector<VertexId>& list, std::size_t
     bool all = true;
     for (const VertexId v : t_.cells_[hint].v) all = all && owned(v);
     if (all) {
-      kept_locks_ = locked_.size();
-      star_.assign(1, hint);
-      last_ = hint;
-      star_is_latest_ = true;
+      keep_cell_locks(hint);
       from = i;
       return;
     }
