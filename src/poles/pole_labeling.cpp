@@ -1,11 +1,11 @@
 #include "rstruct/poles/pole_labeling.hpp"
 
 #include <cmath>
-#include <queue>
 #include <sstream>
 #include <utility>
 #include <vector>
 
+#include "indexed_max_heap.hpp"
 #include "rstruct/core/error.hpp"
 
 namespace rstruct::poles {
@@ -26,8 +26,12 @@ void check_threshold(double value, const char* name) {
 /// unit vector from s towards each such pole: the cosine of the angle at which two polar
 /// spheres through s meet is then one dot product.
 struct Incidence {
-  std::vector<std::uint32_t> start, poles;
-  std::vector<Vec3> unit;
+  struct Entry {
+    Vec3 unit;
+    std::uint32_t pole;
+  };
+  std::vector<std::uint32_t> start;
+  std::vector<Entry> entries;  // a sample's poles side by side: one or two cache lines
 };
 
 Incidence build_incidence(const PoleSet& poles, std::span<const Point3> samples) {
@@ -40,17 +44,15 @@ Incidence build_incidence(const PoleSet& poles, std::span<const Point3> samples)
     }
   }
   for (std::size_t s = 0; s < n; ++s) inc.start[s + 1] += inc.start[s];
-  inc.poles.resize(inc.start[n]);
-  inc.unit.resize(inc.start[n]);
+  inc.entries.resize(inc.start[n]);
   std::vector<std::uint32_t> fill(inc.start.begin(), inc.start.end() - 1);
   for (std::uint32_t p = 0; p < poles.size(); ++p) {
     for (const std::uint32_t v : poles.sites[p]) {
       if (v >= n) continue;
       const Vec3 d = poles.centre[p] - samples[v];
       const double length = norm(d);
-      inc.poles[fill[v]] = p;
       // A zero vector (pole on the sample, impossible for radius > 0) gives no evidence.
-      inc.unit[fill[v]++] = length > 0 ? d / length : Vec3{};
+      inc.entries[fill[v]++] = {length > 0 ? d / length : Vec3{}, p};
     }
   }
   return inc;
@@ -62,47 +64,47 @@ class Labeler {
       : poles_(poles),
         parameters_(parameters),
         incidence_(build_incidence(poles, samples)),
-        inner_(poles.size(), kNone),
-        outer_(poles.size(), kNone),
-        done_(poles.size(), 0) {}
+        evidence_(poles.size()),
+        done_(poles.size(), 0),
+        heap_(poles.size()) {}
 
   void run(LabelingStats& stats) {
     for (std::uint32_t p = 0; p < poles_.size(); ++p) {
       if (poles_.is_box_pole(p)) {
-        outer_[p] = kSeedWeight;
-        heap_.emplace(kSeedWeight, p);
+        evidence_[p].outer = kSeedWeight;
+        heap_.raise(p, kSeedWeight);
       }
     }
     while (!heap_.empty()) {
-      const auto [weight, p] = heap_.top();
-      heap_.pop();
-      if (done_[p] != 0 || weight != std::fmax(inner_[p], outer_[p])) continue;  // stale
+      const std::uint32_t p = heap_.pop().second;  // its priority: the larger evidence
       done_[p] = 1;
-      if (inner_[p] == outer_[p]) {
+      const Evidence& e = evidence_[p];
+      if (e.inner == e.outer) {
         ++stats.ties;
         continue;
       }
-      poles_.label[p] = inner_[p] > outer_[p] ? PoleLabel::inner : PoleLabel::outer;
+      poles_.label[p] = e.inner > e.outer ? PoleLabel::inner : PoleLabel::outer;
       propagate(p, stats);
     }
   }
 
   /// Evidence for the side other than the pole's label.
   bool has_contrary_evidence(std::uint32_t p) const {
-    if (poles_.label[p] == PoleLabel::inner) return outer_[p] != kNone;
-    if (poles_.label[p] == PoleLabel::outer) return inner_[p] != kNone;
+    if (poles_.label[p] == PoleLabel::inner) return evidence_[p].outer != kNone;
+    if (poles_.label[p] == PoleLabel::outer) return evidence_[p].inner != kNone;
     return false;
   }
 
  private:
   void give(std::uint32_t q, PoleLabel side, double weight) {
-    double& evidence = side == PoleLabel::inner ? inner_[q] : outer_[q];
+    Evidence& e = evidence_[q];
+    double& evidence = side == PoleLabel::inner ? e.inner : e.outer;
     if (weight <= evidence) return;
-    const double before = std::fmax(inner_[q], outer_[q]);
+    const double before = std::fmax(e.inner, e.outer);
     evidence = weight;
-    // Only a larger priority needs a new heap entry; ties and contradictions are judged
-    // from inner_/outer_ when the pole is popped, whichever entry pops it.
-    if (done_[q] == 0 && weight > before) heap_.emplace(weight, q);
+    // Only a larger priority moves the pole up the queue; ties and contradictions are
+    // judged from the evidence when the pole is popped.
+    if (weight > before && done_[q] == 0) heap_.raise(q, weight);
   }
 
   void propagate(std::uint32_t p, LabelingStats& stats) {
@@ -111,17 +113,18 @@ class Labeler {
     for (const std::uint32_t s : poles_.sites[p]) {
       if (s >= poles_.sample_count) continue;
       const std::uint32_t begin = incidence_.start[s], end = incidence_.start[s + 1];
+      const Incidence::Entry* entries = incidence_.entries.data();
       std::uint32_t own = begin;
-      while (incidence_.poles[own] != p) ++own;  // p is incident to s by construction
-      const Vec3 up = incidence_.unit[own];
+      while (entries[own].pole != p) ++own;  // p is incident to s by construction
+      const Vec3 up = entries[own].unit;
       for (std::uint32_t k = begin; k < end; ++k) {
         if (k == own) continue;
         ++stats.pairs_examined;
-        const double c = dot(up, incidence_.unit[k]);
+        const double c = dot(up, entries[k].unit);
         if (c >= parameters_.same_min_cos) {
-          give(incidence_.poles[k], same, c);
+          give(entries[k].pole, same, c);
         } else if (-c >= parameters_.opposite_min_cos) {
-          give(incidence_.poles[k], other, -c);
+          give(entries[k].pole, other, -c);
         }
       }
     }
@@ -130,9 +133,13 @@ class Labeler {
   PoleSet& poles_;
   LabelingParameters parameters_;
   Incidence incidence_;
-  std::vector<double> inner_, outer_;
+  struct Evidence {
+    double inner = kNone;  // the strongest evidence for each side
+    double outer = kNone;
+  };
+  std::vector<Evidence> evidence_;
   std::vector<char> done_;
-  std::priority_queue<std::pair<double, std::uint32_t>> heap_;
+  detail::IndexedMaxHeap heap_;
 };
 
 void count(const PoleSet& poles, const Labeler& labeler, LabelingStats& stats) {
