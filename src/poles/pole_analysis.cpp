@@ -2,12 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <sstream>
-#include <thread>
 
 #include "rstruct/core/error.hpp"
-#include "rstruct/core/parallel.hpp"
 #include "rstruct/triangulation/regular_triangulation_3.hpp"
 
 namespace rstruct::poles {
@@ -121,31 +118,13 @@ PoleAnalysis analyse_poles(std::span<const Point3> samples, const PoleAnalysisOp
   soup = Soup{};
   {
     // The labelling (sequential) and D̂ are independent: the labels write PoleSet::label,
-    // D̂ reads the centres and sample_poles. With two or more threads the labelling runs
-    // on one beside the D̂ queries on the others; one stage, since they overlap.
+    // D̂ reads the centres and sample_poles. The labelling runs on one thread beside the
+    // D̂ queries, and that thread takes queries too once it is done; one stage, since they
+    // overlap.
     Report::Stage stage(r, "labels + pole distance");
-    const unsigned threads = thread_count(options.threads, samples.size());
-    if (threads < 2) {
+    analysis.dhat = pole_distance_beside(samples, analysis.poles, options.threads, [&] {
       analysis.labeling = label_poles(analysis.poles, samples, options.labeling);
-      analysis.dhat = pole_distance(samples, analysis.poles, 1);
-    } else {
-      std::exception_ptr labeling_error;
-      std::thread labeler([&] {
-        try {
-          analysis.labeling = label_poles(analysis.poles, samples, options.labeling);
-        } catch (...) {
-          labeling_error = std::current_exception();
-        }
-      });
-      try {
-        analysis.dhat = pole_distance(samples, analysis.poles, threads - 1);
-      } catch (...) {
-        labeler.join();
-        throw;
-      }
-      labeler.join();
-      if (labeling_error) std::rethrow_exception(labeling_error);
-    }
+    });
   }
   if (report != nullptr) record(*report, analysis);
   return analysis;

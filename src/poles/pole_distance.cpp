@@ -1,7 +1,9 @@
 #include "rstruct/poles/pole_distance.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <functional>
 #include <thread>
 
 #include "parallel_blocks.hpp"
@@ -28,31 +30,68 @@ void check_inputs(std::span<const Point3> points, std::span<const Point3> poles)
   }
 }
 
-/// Runs nearest(i) → pole index for every point in blocks over threads, and fills D̂.
+/// Runs nearest(i) → pole index for every point and fills D̂. The queries go in Morton
+/// order (consecutive searches walk the same part of the tree), in blocks that the
+/// workers take in turn, so a worker that starts late (after `side`) still gets its share.
 template <class Nearest>
 PoleDistance run_queries(std::span<const Point3> points, std::span<const Point3> poles,
-                         unsigned threads, Nearest&& nearest) {
+                         unsigned threads, Nearest&& nearest,
+                         const std::function<void()>* side = nullptr) {
   PoleDistance result;
   result.distance.resize(points.size());
   result.nearest.resize(points.size());
-  if (points.empty()) return result;
+  if (points.empty()) {
+    if (side != nullptr) (*side)();
+    return result;
+  }
   const unsigned hardware = std::max(1U, std::thread::hardware_concurrency());
-  const std::size_t useful = std::max<std::size_t>(1, points.size() / 8192);
-  const auto t = static_cast<unsigned>(
+  constexpr std::size_t kBlock = 2048;
+  const std::size_t useful = std::max<std::size_t>(1, points.size() / (4 * kBlock));
+  auto t = static_cast<unsigned>(
       std::min<std::size_t>(threads != 0 ? threads : hardware, useful));
-  // Queries in Morton order: consecutive searches walk the same part of the tree.
+  if (side != nullptr) t = std::max(t, std::min(2U, threads != 0 ? threads : hardware));
   const std::vector<std::uint32_t> order = detail::morton_order(points);
-  const std::size_t chunk = (points.size() + t - 1) / t;
+  std::atomic<std::size_t> next_block{0};
   detail::run_blocks(t, [&](unsigned k) {
-    const std::size_t begin = std::min(points.size(), k * chunk);
-    const std::size_t end = std::min(points.size(), begin + chunk);
-    for (std::size_t position = begin; position < end; ++position) {
-      const std::uint32_t i = order[position];
-      result.nearest[i] = nearest(i);
-      result.distance[i] = distance(points[i], poles[result.nearest[i]]);
+    // The last worker runs the side task first (alone, if there is only one).
+    if (side != nullptr && k + 1 == t) (*side)();
+    for (;;) {
+      const std::size_t begin = kBlock * next_block.fetch_add(1, std::memory_order_relaxed);
+      if (begin >= points.size()) break;
+      const std::size_t end = std::min(points.size(), begin + kBlock);
+      for (std::size_t position = begin; position < end; ++position) {
+        const std::uint32_t i = order[position];
+        result.nearest[i] = nearest(i);
+        result.distance[i] = distance(points[i], poles[result.nearest[i]]);
+      }
     }
   });
   return result;
+}
+
+/// The search of pole_distance(samples, poles): from the nearer of the sample's own poles.
+auto from_own_poles(std::span<const Point3> samples, const PoleSet& poles,
+                    const detail::PointKdTree& tree) {
+  return [samples, &poles, &tree](std::size_t i) {
+    std::uint32_t best = kNoPole;
+    double best_d2 = HUGE_VAL;
+    for (const std::uint32_t p : poles.sample_poles[i]) {
+      if (p == kNoPole) continue;
+      const double d2 = squared_distance(samples[i], poles.centre[p]);
+      if (d2 < best_d2) {
+        best_d2 = d2;
+        best = p;
+      }
+    }
+    return best == kNoPole ? tree.nearest(samples[i]) : tree.nearest_from(samples[i], best, best_d2);
+  };
+}
+
+void check_sample_count(std::span<const Point3> samples, const PoleSet& poles) {
+  if (samples.size() != poles.sample_count) {
+    throw InvalidInput("pole distance: " + std::to_string(samples.size()) +
+                       " samples given for a pole set of " + std::to_string(poles.sample_count));
+  }
 }
 
 }  // namespace
@@ -68,26 +107,24 @@ PoleDistance pole_distance(std::span<const Point3> points, std::span<const Point
 
 PoleDistance pole_distance(std::span<const Point3> samples, const PoleSet& poles,
                            unsigned threads) {
-  if (samples.size() != poles.sample_count) {
-    throw InvalidInput("pole distance: " + std::to_string(samples.size()) +
-                       " samples given for a pole set of " + std::to_string(poles.sample_count));
-  }
+  check_sample_count(samples, poles);
   check_inputs(samples, poles.centre);
   if (samples.empty()) return {};
   const detail::PointKdTree tree(poles.centre);
-  return run_queries(samples, poles.centre, threads, [&](std::size_t i) {
-    std::uint32_t best = kNoPole;
-    double best_d2 = HUGE_VAL;
-    for (const std::uint32_t p : poles.sample_poles[i]) {
-      if (p == kNoPole) continue;
-      const double d2 = squared_distance(samples[i], poles.centre[p]);
-      if (d2 < best_d2) {
-        best_d2 = d2;
-        best = p;
-      }
-    }
-    return best == kNoPole ? tree.nearest(samples[i]) : tree.nearest_from(samples[i], best, best_d2);
-  });
+  return run_queries(samples, poles.centre, threads, from_own_poles(samples, poles, tree));
+}
+
+PoleDistance pole_distance_beside(std::span<const Point3> samples, const PoleSet& poles,
+                                  unsigned threads, const std::function<void()>& side_task) {
+  check_sample_count(samples, poles);
+  check_inputs(samples, poles.centre);
+  if (samples.empty()) {
+    side_task();
+    return {};
+  }
+  const detail::PointKdTree tree(poles.centre);
+  return run_queries(samples, poles.centre, threads, from_own_poles(samples, poles, tree),
+                     &side_task);
 }
 
 PoleDistance pole_distance_brute_force(std::span<const Point3> points,

@@ -1,11 +1,14 @@
 #include "rstruct/poles/pole_distance.hpp"
 
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <random>
 #include <rapidcheck/catch.h>
+#include <thread>
 #include <vector>
 
 #include "rstruct/core/error.hpp"
+#include "rstruct/poles/pole_analysis.hpp"
 
 using rstruct::Point3;
 using rstruct::poles::pole_distance;
@@ -65,4 +68,36 @@ TEST_CASE("D̂ input errors") {
   CHECK_THROWS_AS(pole_distance(bad, one), rstruct::InvalidInput);
   CHECK_THROWS_AS(pole_distance(one, bad), rstruct::InvalidInput);
   CHECK(pole_distance(none, none).distance.empty());
+}
+
+TEST_CASE("D̂ beside a side task: the task runs once and the distances do not change") {
+  // 20,000 samples on a sphere: ten blocks of queries, so that the workers share them.
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::vector<Point3> samples(20000);
+  for (auto& p : samples) p = rstruct::normalized(rstruct::Vec3{g(rng), g(rng), g(rng)});
+  rstruct::poles::PoleAnalysisOptions options;
+  options.threads = 1;
+  rstruct::poles::PoleAnalysis analysis = rstruct::poles::analyse_poles(samples, options);
+  const auto reference = pole_distance(samples, analysis.poles, 1);
+  for (const unsigned threads : {1U, 2U, 3U}) {
+    for (const int delay_ms : {0, 30}) {
+      int runs = 0;
+      const auto d = rstruct::poles::pole_distance_beside(samples, analysis.poles, threads, [&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+        ++runs;
+      });
+      CHECK(runs == 1);
+      CHECK(d.distance == reference.distance);  // bitwise: the same searches
+      CHECK(d.nearest == reference.nearest);
+    }
+    CHECK_THROWS_WITH(rstruct::poles::pole_distance_beside(
+                          samples, analysis.poles, threads,
+                          [] { throw rstruct::InvalidInput("side task failed"); }),
+                      "side task failed");
+  }
+  int runs = 0;
+  CHECK(rstruct::poles::pole_distance_beside({}, rstruct::poles::PoleSet{}, 2, [&] { ++runs; })
+            .distance.empty());
+  CHECK(runs == 1);
 }

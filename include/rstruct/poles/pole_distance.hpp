@@ -11,6 +11,7 @@
 /// few ulps).
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -37,6 +38,14 @@ PoleDistance pole_distance(std::span<const Point3> points, std::span<const Point
 /// \throws InvalidInput as pole_distance, or if samples.size() != poles.sample_count.
 PoleDistance pole_distance(std::span<const Point3> samples, const PoleSet& poles,
                            unsigned threads = 0);
+
+/// The same, with `side_task` run on one of the `threads` threads (0: hardware
+/// concurrency): that thread joins the queries when the task returns, the others start at
+/// once. With one thread, the task runs first. The task must not write `poles.centre` or
+/// `poles.sample_poles` (analyse_poles runs the labeling here, which writes poles.label).
+/// An exception from the task is rethrown once the queries are done.
+PoleDistance pole_distance_beside(std::span<const Point3> samples, const PoleSet& poles,
+                                  unsigned threads, const std::function<void()>& side_task);
 
 /// Reference implementation for tests: a linear scan per point.
 PoleDistance pole_distance_brute_force(std::span<const Point3> points,
