@@ -163,7 +163,7 @@ TEST_CASE("the poles do not depend on the threads choosing them") {
   REQUIRE(one.is_valid());
   REQUIRE(one.size() > 100);
   for (const unsigned threads : {2u, 3u}) {
-    const PoleSet many = compute_poles(soup, threads, 1);  // one range of samples per thread
+    const PoleSet many = compute_poles(soup, threads, 1);  // one range of tetrahedra per thread
     CHECK(many.tet == one.tet);
     CHECK(many.owner == one.owner);
     CHECK(many.sample_poles == one.sample_poles);
@@ -185,12 +185,17 @@ TEST_CASE("the poles do not depend on the order of the soup; ties go to the smal
   REQUIRE(one.is_valid());
   REQUIRE(one.size() > 100);
   for (std::size_t p = 0; p < one.size(); ++p) CHECK(one.tet[p] < 3000);  // first copies
+  for (const unsigned threads : {2u, 3u}) {  // the copies in a later range than the originals
+    const PoleSet many = compute_poles(soup, threads, 1);
+    CHECK(many.tet == one.tet);
+    CHECK(many.sample_poles == one.sample_poles);
+  }
   for (std::size_t p = 1; p < one.size(); ++p) CHECK(one.owner[p - 1] <= one.owner[p]);
   for (int round = 0; round < 3; ++round) {
     std::vector<Tet> shuffled = tets;
     std::shuffle(shuffled.begin(), shuffled.end(), rng);
     const TetrahedronSoup other{vertices, 200, shuffled, {}};
-    const PoleSet many = compute_poles(other, 2);
+    const PoleSet many = compute_poles(other, 2, 1);  // two ranges of tetrahedra
     REQUIRE(many.size() == one.size());
     CHECK(many.owner == one.owner);
     CHECK(many.sites == one.sites);

@@ -84,14 +84,14 @@ struct PoleSet {
   bool is_valid() const;
 };
 
-/// Poles of the samples from a Delaunay tetrahedralisation. Circumspheres are computed in
-/// `threads` threads (0: hardware concurrency), and the poles are chosen by one thread per
-/// `tetrahedra_per_thread` tetrahedra at the most (each reads them all); the result does
-/// not depend on either.
+/// Poles of the samples from a Delaunay tetrahedralisation, in `threads` threads (0:
+/// hardware concurrency) but at most one per `tetrahedra_per_thread` tetrahedra; each takes
+/// a range of the tetrahedra (its circumspheres, and the poles among them of every sample),
+/// and the ranges' choices are merged. The result does not depend on either parameter.
 /// \throws InvalidInput if a tetrahedron has a vertex index out of range, or a representative
 /// is out of range or is itself not its own representative.
 /// \throws InternalError if a tetrahedron is flat.
 PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads = 0,
-                      std::size_t tetrahedra_per_thread = std::size_t{4} << 20);
+                      std::size_t tetrahedra_per_thread = std::size_t{1} << 16);
 
 }  // namespace rstruct::poles
