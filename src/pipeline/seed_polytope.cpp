@@ -98,7 +98,7 @@ std::vector<VertexId> power_cells_of(std::span<const Point3> samples,
   std::vector<Point3> queries;
   queries.reserve(ids.size());
   for (const std::uint32_t s : ids) queries.push_back(samples[s]);
-  const std::vector<std::uint32_t> order = triangulation::hilbert_order(queries);
+  const std::vector<std::uint32_t> order = triangulation::hilbert_order(queries, threads);
   std::vector<VertexId> answer(ids.size(), kNone);
   parallel_chunks(order.size(), threads, 4096, [&](std::size_t b, std::size_t e, unsigned) {
     VertexId previous = kNone;
@@ -200,7 +200,7 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples, const SeedOp
   for (const Point3& p : samples) finite = finite && is_finite(p);
   std::vector<std::uint32_t> order;
   if (finite) {
-    order = triangulation::hilbert_order(samples);
+    order = triangulation::hilbert_order(samples, options.threads);
   } else {
     order.resize(samples.size());
     for (std::uint32_t i = 0; i < samples.size(); ++i) order[i] = i;
@@ -294,7 +294,7 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
     std::vector<Point3> kept_points;
     kept_points.reserve(out.kept.size());
     for (std::uint32_t s : out.kept) kept_points.push_back(samples[s]);
-    ball_sample = triangulation::hilbert_order(kept_points);
+    ball_sample = triangulation::hilbert_order(kept_points, options.threads);
     for (std::uint32_t& b : ball_sample) b = out.kept[b];
   }
   std::vector<Point3> centres;

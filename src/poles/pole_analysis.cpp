@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "rstruct/core/error.hpp"
+#include "rstruct/core/parallel.hpp"
 #include "rstruct/triangulation/regular_triangulation_3.hpp"
 
 namespace rstruct::poles {
@@ -31,15 +32,42 @@ struct Soup {
   std::vector<std::uint32_t> representative;
 };
 
-Soup soup_of(const triangulation::RegularTriangulation3& dt, std::size_t sample_count) {
+Soup soup_of(const triangulation::RegularTriangulation3& dt, std::size_t sample_count,
+             unsigned threads) {
   Soup soup;
-  soup.tets.reserve(dt.number_of_finite_cells());
-  // Vertex ids sorted: a tetrahedron's circumcentre is computed from the same vertex order
-  // whatever the triangulation stored (with parallel insertion, that depends on timing).
-  dt.for_each_finite_cell([&](triangulation::CellId c) {
-    std::array<std::uint32_t, 4> q = dt.vertices(c);
-    std::sort(q.begin(), q.end());
-    soup.tets.push_back(q);
+  // The finite cells in id order, on `threads` threads: each chunk of cell ids counts its
+  // finite cells, then writes them from its offset. Vertex ids sorted: a tetrahedron's
+  // circumcentre is computed from the same vertex order whatever the triangulation stored
+  // (with parallel insertion, that depends on timing).
+  constexpr std::size_t kChunk = std::size_t{1} << 16;
+  const std::size_t cap = dt.cell_capacity();
+  const std::size_t chunks = (cap + kChunk - 1) / kChunk;
+  const auto finite = [&](triangulation::CellId c) {
+    if (!dt.is_cell(c)) return false;
+    for (const std::uint32_t v : dt.vertices(c)) {
+      if (v == triangulation::kInfiniteVertex) return false;
+    }
+    return true;
+  };
+  std::vector<std::size_t> offset(chunks + 1, 0);
+  parallel_chunks(chunks, threads, 1, [&](std::size_t k, std::size_t, unsigned) {
+    const std::size_t end = std::min(cap, (k + 1) * kChunk);
+    for (std::size_t c = k * kChunk; c < end; ++c) {
+      offset[k + 1] += finite(static_cast<triangulation::CellId>(c)) ? 1 : 0;
+    }
+  });
+  for (std::size_t k = 0; k < chunks; ++k) offset[k + 1] += offset[k];
+  soup.tets.resize(offset[chunks]);
+  parallel_chunks(chunks, threads, 1, [&](std::size_t k, std::size_t, unsigned) {
+    const std::size_t end = std::min(cap, (k + 1) * kChunk);
+    std::size_t out = offset[k];
+    for (std::size_t c = k * kChunk; c < end; ++c) {
+      const auto id = static_cast<triangulation::CellId>(c);
+      if (!finite(id)) continue;
+      std::array<std::uint32_t, 4> q = dt.vertices(id);
+      std::sort(q.begin(), q.end());
+      soup.tets[out++] = q;
+    }
   });
   soup.representative.resize(sample_count);
   for (std::uint32_t s = 0; s < sample_count; ++s) soup.representative[s] = s;
@@ -105,7 +133,7 @@ PoleAnalysis analyse_poles(std::span<const Point3> samples, const PoleAnalysisOp
     dt_options.threads = options.threads;
     dt_options.insert_last = box.size();  // the corners would be every worker's bottleneck
     const triangulation::RegularTriangulation3 dt(std::move(sites), dt_options);
-    soup = soup_of(dt, samples.size());
+    soup = soup_of(dt, samples.size(), options.threads);
     analysis.duplicate_samples = dt.duplicate_points().size();
     sites.assign(dt.points().begin(), dt.points().end());
   }

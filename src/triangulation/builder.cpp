@@ -102,8 +102,13 @@ void Builder::run() {
   Stopwatch clock;
   // Input ids from first_last on are inserted after all the others (insert_last).
   const std::size_t first_last = n - std::min(options_.insert_last, n);
+  // The Hilbert keys that partition the parallel rounds (by input id until the points are
+  // in insertion order), from the sort.
+  std::vector<std::uint32_t> input_keys;
+  const bool parallel_rounds = options_.spatial_sort && !options_.after_insertion && workers_ > 1;
   if (options_.spatial_sort) {
-    t_.order_ = brio_order(t_.points_, options_.seed);
+    t_.order_ = brio_order(t_.points_, options_.seed, 4, 256, workers_,
+                           parallel_rounds ? &input_keys : nullptr);
     std::stable_partition(t_.order_.begin(), t_.order_.end(),
                           [&](VertexId v) { return v < first_last; });
   } else {
@@ -153,7 +158,9 @@ void Builder::run() {
   if (reorder_ && workers_ > 1) {
     // Rounds are the maximal stretches of non-decreasing Hilbert keys (a round may merge
     // with the next: still one stretch along the curve).
-    keys_ = hilbert_keys(t_.points_);
+    keys_.resize(n);
+    for (std::size_t r = 0; r < n; ++r) keys_[r] = input_keys[t_.order_[r]];
+    input_keys = {};
     owner_store_.assign(n, 0);
     owner_ = owner_store_.data();
     use_locks_ = options_.parallel_scheme == TriangulationOptions::ParallelScheme::locks;
@@ -708,12 +715,17 @@ void Builder::permute_to_insertion_order() {
 // points (and weights) are permuted in place, cycle by cycle, so no second copy is needed.
 void Builder::restore_input_order() {
   const std::vector<VertexId>& order = t_.order_;
-  for (Cell& k : t_.cells_) {
-    if (k.v[0] == RegularTriangulation3::kFreeMark) continue;
-    for (VertexId& v : k.v) {
-      if (v != kInfiniteVertex) v = order[v];
-    }
-  }
+  Cell* const cells = t_.cells_.data();
+  parallel_chunks(t_.cells_.size(), workers_, std::size_t{1} << 16,
+                  [&](std::size_t begin, std::size_t end, unsigned) {
+                    for (std::size_t c = begin; c < end; ++c) {
+                      Cell& k = cells[c];
+                      if (k.v[0] == RegularTriangulation3::kFreeMark) continue;
+                      for (VertexId& v : k.v) {
+                        if (v != kInfiniteVertex) v = order[v];
+                      }
+                    }
+                  });
   for (HiddenPoint& h : raw_hidden_) h.point = order[h.point];
   std::vector<bool> placed(order.size(), false);
   for (std::size_t r = 0; r < order.size(); ++r) {

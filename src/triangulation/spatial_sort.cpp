@@ -5,6 +5,8 @@
 #include <numeric>
 #include <utility>
 
+#include "rstruct/core/parallel.hpp"
+
 namespace rstruct::triangulation {
 
 namespace {
@@ -60,12 +62,63 @@ class HilbertKeyer {
   double scale_[3] = {0, 0, 0};
 };
 
-void sort_by_key(std::vector<KeyedIndex>& items, std::size_t begin, std::size_t end) {
-  std::sort(items.begin() + static_cast<std::ptrdiff_t>(begin),
-            items.begin() + static_cast<std::ptrdiff_t>(end),
-            [](const KeyedIndex& a, const KeyedIndex& b) {
-              return a.key < b.key || (a.key == b.key && a.index < b.index);
-            });
+bool before(const KeyedIndex& a, const KeyedIndex& b) {
+  return a.key < b.key || (a.key == b.key && a.index < b.index);
+}
+
+/// Below this many points per thread the sort and the keys run on one thread.
+constexpr std::size_t kPerThread = std::size_t{1} << 15;
+
+/// Sorts `items` by (key, index), a total order: the result does not depend on `threads`.
+/// With t threads, t stretches are sorted side by side and then merged pairwise (the
+/// merges of one level side by side too).
+void sort_by_key(std::vector<KeyedIndex>& items, unsigned threads) {
+  const std::size_t n = items.size();
+  const unsigned t = thread_count(threads, n, kPerThread);
+  if (t <= 1) {
+    std::sort(items.begin(), items.end(), before);
+    return;
+  }
+  std::vector<std::size_t> bounds(t + 1);
+  for (unsigned k = 0; k <= t; ++k) bounds[k] = n * k / t;
+  const auto at = [&](std::vector<KeyedIndex>& v, std::size_t i) {
+    return v.begin() + static_cast<std::ptrdiff_t>(i);
+  };
+  parallel_chunks(t, t, 1, [&](std::size_t k, std::size_t, unsigned) {
+    std::sort(at(items, bounds[k]), at(items, bounds[k + 1]), before);
+  });
+  std::vector<KeyedIndex> other(n);
+  while (bounds.size() > 2) {
+    const std::size_t pairs = (bounds.size() - 1) / 2;
+    std::vector<std::size_t> merged;
+    for (std::size_t k = 0; k + 2 < bounds.size(); k += 2) merged.push_back(bounds[k]);
+    if ((bounds.size() - 1) % 2 != 0) merged.push_back(bounds[bounds.size() - 2]);
+    merged.push_back(n);
+    parallel_chunks(pairs + (bounds.size() - 1) % 2, t, 1, [&](std::size_t k, std::size_t,
+                                                                unsigned) {
+      const std::size_t lo = bounds[2 * k];
+      if (2 * k + 2 < bounds.size()) {
+        std::merge(at(items, lo), at(items, bounds[2 * k + 1]), at(items, bounds[2 * k + 1]),
+                   at(items, bounds[2 * k + 2]), at(other, lo), before);
+      } else {  // an odd stretch out: copied as it is
+        std::copy(at(items, lo), at(items, bounds[2 * k + 1]), at(other, lo));
+      }
+    });
+    items.swap(other);
+    bounds = std::move(merged);
+  }
+}
+
+/// Fills items[i] = {key(i), i} for every point on `threads` threads.
+template <class Key>
+void key_items(std::vector<KeyedIndex>& items, unsigned threads, Key&& key) {
+  const std::size_t n = items.size();
+  parallel_chunks(n, thread_count(threads, n, kPerThread), kPerThread,
+                  [&](std::size_t begin, std::size_t end, unsigned) {
+                    for (std::size_t i = begin; i < end; ++i) {
+                      items[i] = {key(i), static_cast<std::uint32_t>(i)};
+                    }
+                  });
 }
 
 }  // namespace
@@ -115,13 +168,11 @@ std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, std::uint32_t z, i
 
 }  // namespace
 
-std::vector<std::uint32_t> hilbert_order(std::span<const Point3> points) {
+std::vector<std::uint32_t> hilbert_order(std::span<const Point3> points, unsigned threads) {
   const HilbertKeyer keyer(points, kBits);
   std::vector<KeyedIndex> items(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    items[i] = {keyer.key(points[i]), static_cast<std::uint32_t>(i)};
-  }
-  sort_by_key(items, 0, items.size());
+  key_items(items, threads, [&](std::size_t i) { return keyer.key(points[i]); });
+  sort_by_key(items, threads);
   std::vector<std::uint32_t> order(items.size());
   for (std::size_t i = 0; i < items.size(); ++i) order[i] = items[i].index;
   return order;
@@ -137,7 +188,8 @@ std::vector<std::uint32_t> hilbert_keys(std::span<const Point3> points) {
 }
 
 std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint64_t seed,
-                                      std::uint32_t ratio_divisor, std::size_t min_round) {
+                                      std::uint32_t ratio_divisor, std::size_t min_round,
+                                      unsigned threads, std::vector<std::uint32_t>* keys) {
   const std::size_t n = points.size();
   const std::uint64_t divisor = std::max<std::uint32_t>(ratio_divisor, 2);
   // Rounds: the last holds each point with probability 1 − 1/divisor, the one before it
@@ -152,14 +204,21 @@ std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint6
   // curve.
   const HilbertKeyer keyer(points, kSortBits);
   std::vector<KeyedIndex> items(n);
-  for (std::size_t i = 0; i < n; ++i) {
+  key_items(items, threads, [&](std::size_t i) {
     std::uint64_t state = seed ^ (static_cast<std::uint64_t>(i) * 0xD1B54A32D192ED03ull);
     int level = 0;
     while (level < rounds - 1 && next_random(state) % divisor == 0) ++level;
     const auto round = static_cast<std::uint64_t>(rounds - 1 - level);
-    items[i] = {round << kRoundShift | keyer.key(points[i]), static_cast<std::uint32_t>(i)};
+    return round << kRoundShift | keyer.key(points[i]);
+  });
+  if (keys != nullptr) {  // hilbert_keys(points), from the keys at hand
+    keys->resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      (*keys)[i] = static_cast<std::uint32_t>(
+          (items[i].key & ((std::uint64_t{1} << kRoundShift) - 1)) >> (3 * kSortBits - 32));
+    }
   }
-  sort_by_key(items, 0, n);
+  sort_by_key(items, threads);
   std::vector<std::uint32_t> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = items[i].index;
   return order;

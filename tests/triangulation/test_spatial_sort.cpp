@@ -48,3 +48,25 @@ TEST_CASE("orders are permutations") {
     }
   });
 }
+
+TEST_CASE("the orders and keys do not depend on the threads computing them") {
+  // 2^17 + 5 points: up to four stretches of 2^15 sorted side by side, and with three
+  // threads a stretch left over at the first merge.
+  namespace tr = rstruct::triangulation;
+  const std::size_t n = (std::size_t{1} << 17) + 5;
+  auto p = rstruct::test::uniform_points(n, 11);
+  for (std::size_t i = 0; i < 1000; ++i) p[n - 1 - i] = p[i];  // equal keys: ties by index
+  const std::vector<std::uint32_t> hilbert = tr::hilbert_order(p, 1);
+  const std::vector<std::uint32_t> brio = tr::brio_order(p, 5, 4, 256, 1);
+  const std::vector<std::uint32_t> keys = tr::hilbert_keys(p);
+  for (const unsigned threads : {2u, 3u, 4u}) {
+    CHECK(tr::hilbert_order(p, threads) == hilbert);
+    std::vector<std::uint32_t> brio_keys;
+    CHECK(tr::brio_order(p, 5, 4, 256, threads, &brio_keys) == brio);
+    CHECK(brio_keys == keys);
+  }
+  // The ties go by index: equal points are listed in increasing index order.
+  std::vector<std::size_t> rank(n);
+  for (std::size_t r = 0; r < n; ++r) rank[hilbert[r]] = r;
+  for (std::size_t i = 0; i < 1000; ++i) CHECK(rank[i] < rank[n - 1 - i]);
+}

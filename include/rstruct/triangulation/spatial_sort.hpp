@@ -17,19 +17,23 @@ namespace rstruct::triangulation {
 /// Hilbert index (63 bits, 21 per axis) of grid cell (x, y, z), each coordinate < 2^21.
 std::uint64_t hilbert_index_3d(std::uint32_t x, std::uint32_t y, std::uint32_t z);
 
-/// The indices 0..n−1 of `points` in Hilbert order (ties broken by index).
+/// The indices 0..n−1 of `points` in Hilbert order (ties broken by index), computed on
+/// `threads` threads (0: hardware concurrency); the order does not depend on them.
 /// \pre every coordinate finite.
-std::vector<std::uint32_t> hilbert_order(std::span<const Point3> points);
+std::vector<std::uint32_t> hilbert_order(std::span<const Point3> points, unsigned threads = 1);
 
 /// BRIO order: every index drawn into a random round (a function of `seed` and the index)
 /// with rounds of geometrically growing expected size (the last round holds each index with
 /// probability 1 − 1/ratio_divisor, the round before it the same share of the rest, and so
 /// on down to a first round of expected size at most `min_round`); rounds in order, each
-/// sorted along the Hilbert curve.
+/// sorted along the Hilbert curve. Computed on `threads` threads (0: hardware
+/// concurrency); the order does not depend on them. With `keys`, also hilbert_keys(points)
+/// into *keys (the same keys: no second pass over the points).
 /// \pre every coordinate finite; ratio_divisor >= 2.
 std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint64_t seed,
                                       std::uint32_t ratio_divisor = 4,
-                                      std::size_t min_round = 256);
+                                      std::size_t min_round = 256, unsigned threads = 1,
+                                      std::vector<std::uint32_t>* keys = nullptr);
 
 /// The top 32 bits of the Hilbert keys brio_order() sorts each round by (16 bits per axis
 /// over the bounding box of `points`), one per point: points in the same order along the
