@@ -12,6 +12,7 @@ namespace {
 struct Candidate {
   double score;
   std::int32_t col;
+  std::int32_t mu;  // the column's uncovered rows when scored; not part of the order
   bool operator>(const Candidate& o) const {
     return score > o.score || (score == o.score && col > o.col);
   }
@@ -19,10 +20,22 @@ struct Candidate {
 
 }  // namespace
 
+// Lazy greedy: a popped column is rescored, and taken if it is still first. Scores only
+// grow as rows get covered, so this takes the first column in (score, index) order at every
+// step. The uncovered-row count μ of every column is kept up to date as rows get covered
+// (each row once: one pass over the matrix in all), so a column whose μ has not changed
+// since it was scored is taken without rescoring, and without multipliers a rescore is one
+// division. With multipliers γ is summed over the column as before, in the same order.
+// 10^6 torus samples (2.5·10^7 entries, no multipliers, medians of interleaved runs):
+// 0.97 -> 0.75 s, the same cover. (A 4-ary heap in place of std::priority_queue: no faster.)
 std::vector<std::int32_t> greedy_cover(const Instance& inst, std::span<const double> u,
                                        std::span<const char> allowed,
                                        std::span<const std::int32_t> start) {
   std::vector<char> covered(static_cast<std::size_t>(inst.num_rows()), 0);
+  std::vector<std::int32_t> mu(static_cast<std::size_t>(inst.num_cols()));
+  for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
+    mu[j] = static_cast<std::int32_t>(inst.column(j).size());
+  }
   std::int32_t uncovered = inst.num_rows();
   std::vector<std::int32_t> chosen;
   auto take = [&](std::int32_t j) {
@@ -31,21 +44,19 @@ std::vector<std::int32_t> greedy_cover(const Instance& inst, std::span<const dou
       if (!covered[i]) {
         covered[i] = 1;
         --uncovered;
+        for (std::int32_t k : inst.row(i)) --mu[k];
       }
     }
   };
   for (std::int32_t j : start) take(j);
   auto score = [&](std::int32_t j) {
-    std::int32_t mu = 0;
+    if (mu[j] == 0) return Candidate{0.0, -1, 0};
+    if (u.empty()) return Candidate{inst.cost(j) / mu[j], j, mu[j]};
     double gamma = inst.cost(j);
     for (std::int32_t i : inst.column(j)) {
-      if (covered[i]) continue;
-      ++mu;
-      if (!u.empty()) gamma -= u[i];
+      if (!covered[i]) gamma -= u[i];
     }
-    if (mu == 0) return Candidate{0.0, -1};
-    if (u.empty()) return Candidate{gamma / mu, j};
-    return Candidate{gamma > 0 ? gamma / mu : gamma * mu, j};
+    return Candidate{gamma > 0 ? gamma / mu[j] : gamma * mu[j], j, mu[j]};
   };
   std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> heap;
   for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
@@ -57,6 +68,10 @@ std::vector<std::int32_t> greedy_cover(const Instance& inst, std::span<const dou
     RSTRUCT_ASSERT_MSG(!heap.empty(), "greedy: allowed columns do not cover every row");
     const Candidate top = heap.top();
     heap.pop();
+    if (mu[top.col] == top.mu) {  // nothing changed since it was scored
+      take(top.col);
+      continue;
+    }
     const Candidate fresh = score(top.col);
     if (fresh.col < 0) continue;
     if (fresh.score > top.score && !heap.empty() && fresh > heap.top()) {
