@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 #include "rstruct/core/error.hpp"
@@ -45,6 +46,12 @@ Instance Instance::from_columns(std::int32_t num_rows,
 
 Instance Instance::from_csr(std::int32_t num_rows, std::span<const std::int64_t> col_start,
                             std::span<const std::int32_t> col_rows, std::vector<double> costs) {
+  return from_csr(num_rows, std::vector<std::int64_t>(col_start.begin(), col_start.end()),
+                  std::vector<std::int32_t>(col_rows.begin(), col_rows.end()), std::move(costs));
+}
+
+Instance Instance::from_csr(std::int32_t num_rows, std::vector<std::int64_t>&& col_start,
+                            std::vector<std::int32_t>&& col_rows, std::vector<double> costs) {
   if (num_rows < 0) throw InvalidInput("set cover: negative number of rows");
   if (col_start.empty() || col_start.front() != 0 ||
       col_start.back() != static_cast<std::int64_t>(col_rows.size())) {
@@ -62,27 +69,38 @@ Instance Instance::from_csr(std::int32_t num_rows, std::span<const std::int64_t>
     }
   }
   check_costs(costs, num_cols);
-  Instance inst;
-  inst.num_rows_ = num_rows;
-  inst.costs_ = std::move(costs);
-  inst.col_start_.assign(1, 0);
-  inst.col_rows_.reserve(col_rows.size());
+  // Every column sorted and without repeats, in place: entries move down over the repeats
+  // removed before them (none, usually: then nothing moves).
+  std::size_t write = 0;
+  std::size_t read = 0;  // column j's first entry as given (col_start[j] is rewritten)
   for (std::size_t j = 0; j < num_cols; ++j) {
-    const auto first = inst.col_rows_.size();
-    for (std::int64_t k = col_start[j]; k < col_start[j + 1]; ++k) {
-      const std::int32_t r = col_rows[static_cast<std::size_t>(k)];
+    const auto end = static_cast<std::size_t>(col_start[j + 1]);
+    const std::size_t first = write;
+    for (std::size_t k = read; k < end; ++k) {
+      const std::int32_t r = col_rows[k];
       if (r < 0 || r >= num_rows) {
         throw InvalidInput("set cover: column " + std::to_string(j) + " names row " +
                            std::to_string(r) + ", outside [0, " + std::to_string(num_rows) +
                            ")");
       }
-      inst.col_rows_.push_back(r);
+      col_rows[write++] = r;
     }
-    const auto begin = inst.col_rows_.begin() + static_cast<std::ptrdiff_t>(first);
-    std::sort(begin, inst.col_rows_.end());
-    inst.col_rows_.erase(std::unique(begin, inst.col_rows_.end()), inst.col_rows_.end());
-    inst.col_start_.push_back(static_cast<std::int64_t>(inst.col_rows_.size()));
+    const auto begin = col_rows.begin() + static_cast<std::ptrdiff_t>(first);
+    auto stop = col_rows.begin() + static_cast<std::ptrdiff_t>(write);
+    if (std::adjacent_find(begin, stop, std::greater_equal<>()) != stop) {  // not increasing
+      std::sort(begin, stop);
+      stop = std::unique(begin, stop);
+      write = static_cast<std::size_t>(stop - col_rows.begin());
+    }
+    col_start[j + 1] = static_cast<std::int64_t>(write);
+    read = end;
   }
+  col_rows.resize(write);
+  Instance inst;
+  inst.num_rows_ = num_rows;
+  inst.costs_ = std::move(costs);
+  inst.col_start_ = std::move(col_start);
+  inst.col_rows_ = std::move(col_rows);
   inst.build_rows();
   inst.classify_costs();
   return inst;

@@ -227,6 +227,28 @@ void Presolver::split_components() {
   std::vector<std::vector<std::int64_t>> starts(out.components.size(), std::vector<std::int64_t>{0});
   std::vector<std::vector<std::int32_t>> entries(out.components.size());
   std::vector<std::vector<double>> costs(out.components.size());
+  {
+    // Exact sizes first: grown by doubling, the arrays would take about twice their size in
+    // fresh memory (10^6 torus samples: 2.5·10^7 entries in one component).
+    std::vector<std::int64_t> entry_count(out.components.size(), 0);
+    std::vector<std::int32_t> col_count(out.components.size(), 0);
+    for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
+      if (!col_alive_[j]) continue;
+      std::int32_t comp = -1;
+      for (std::int32_t i : inst_.column(j)) {
+        if (!row_alive_[i]) continue;
+        comp = comp_of_root[find_root(parent, i)];
+        ++entry_count[comp];
+      }
+      if (comp >= 0) ++col_count[comp];
+    }
+    for (std::size_t c = 0; c < out.components.size(); ++c) {
+      entries[c].reserve(static_cast<std::size_t>(entry_count[c]));
+      starts[c].reserve(static_cast<std::size_t>(col_count[c]) + 1);
+      costs[c].reserve(static_cast<std::size_t>(col_count[c]));
+      out.components[c].cols.reserve(static_cast<std::size_t>(col_count[c]));
+    }
+  }
   for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
     if (!col_alive_[j]) continue;
     std::int32_t comp = -1;
@@ -242,8 +264,9 @@ void Presolver::split_components() {
   }
   for (std::size_t c = 0; c < out.components.size(); ++c) {
     auto& comp = out.components[c];
-    comp.instance = Instance::from_csr(static_cast<std::int32_t>(comp.rows.size()), starts[c],
-                                       entries[c], std::move(costs[c]));
+    comp.instance = Instance::from_csr(static_cast<std::int32_t>(comp.rows.size()),
+                                       std::move(starts[c]), std::move(entries[c]),
+                                       std::move(costs[c]));
   }
 }
 

@@ -97,9 +97,8 @@ void improve_by_local_search(const Instance& inst, detail::LagrangianState& st,
     out.proven = true;
     return;
   }
-  const Instance sub = Instance::from_csr(inst.num_rows(), start, entries, std::move(costs));
-  std::vector<std::int32_t>().swap(entries);  // sub holds its own copy
-  std::vector<std::int64_t>().swap(start);
+  const Instance sub =
+      Instance::from_csr(inst.num_rows(), std::move(start), std::move(entries), std::move(costs));
   if (sub.num_cols() <= kExactColumns) {
     const auto bb = detail::branch_and_bound(sub, st.cover_cost, kExactNodes, budget.deadline, clock);
     out.exact_nodes = bb.nodes;
