@@ -65,6 +65,12 @@ TEST_CASE("the orders and keys do not depend on the threads computing them") {
     CHECK(tr::brio_order(p, 5, 4, 256, threads, &brio_keys) == brio);
     CHECK(brio_keys == keys);
   }
+  // One round: the order is along the curve, so the keys never decrease.
+  std::vector<std::uint32_t> one_round_keys;
+  const auto one_round = tr::brio_order(p, 5, 4, n, 1, &one_round_keys);
+  for (std::size_t r = 1; r < n; ++r) {
+    if (one_round_keys[one_round[r - 1]] > one_round_keys[one_round[r]]) FAIL("keys decrease at " << r);
+  }
   // The ties go by index: equal points are listed in increasing index order.
   std::vector<std::size_t> rank(n);
   for (std::size_t r = 0; r < n; ++r) rank[hilbert[r]] = r;
