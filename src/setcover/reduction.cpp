@@ -227,6 +227,17 @@ void Presolver::split_components() {
   std::vector<std::vector<std::int64_t>> starts(out.components.size(), std::vector<std::int64_t>{0});
   std::vector<std::vector<std::int32_t>> entries(out.components.size());
   std::vector<std::vector<double>> costs(out.components.size());
+  // Calls entry(comp, i) for every alive row i of column j, comp being i's component, and
+  // returns the column's component (−1: no alive row).
+  const auto visit = [&](std::int32_t j, auto&& entry) {
+    std::int32_t comp = -1;
+    for (std::int32_t i : inst_.column(j)) {
+      if (!row_alive_[i]) continue;
+      comp = comp_of_root[find_root(parent, i)];
+      entry(comp, i);
+    }
+    return comp;
+  };
   {
     // Exact sizes first: grown by doubling, the arrays would take about twice their size in
     // fresh memory (10^6 torus samples: 2.5·10^7 entries in one component).
@@ -234,12 +245,7 @@ void Presolver::split_components() {
     std::vector<std::int32_t> col_count(out.components.size(), 0);
     for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
       if (!col_alive_[j]) continue;
-      std::int32_t comp = -1;
-      for (std::int32_t i : inst_.column(j)) {
-        if (!row_alive_[i]) continue;
-        comp = comp_of_root[find_root(parent, i)];
-        ++entry_count[comp];
-      }
+      const std::int32_t comp = visit(j, [&](std::int32_t c, std::int32_t) { ++entry_count[c]; });
       if (comp >= 0) ++col_count[comp];
     }
     for (std::size_t c = 0; c < out.components.size(); ++c) {
@@ -251,12 +257,8 @@ void Presolver::split_components() {
   }
   for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
     if (!col_alive_[j]) continue;
-    std::int32_t comp = -1;
-    for (std::int32_t i : inst_.column(j)) {
-      if (!row_alive_[i]) continue;
-      comp = comp_of_root[find_root(parent, i)];
-      entries[comp].push_back(local[i]);
-    }
+    const std::int32_t comp =
+        visit(j, [&](std::int32_t c, std::int32_t i) { entries[c].push_back(local[i]); });
     RSTRUCT_ASSERT(comp >= 0);
     starts[comp].push_back(static_cast<std::int64_t>(entries[comp].size()));
     costs[comp].push_back(inst_.cost(j));
