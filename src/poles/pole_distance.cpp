@@ -1,15 +1,14 @@
 #include "rstruct/poles/pole_distance.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <functional>
-#include <thread>
+#include <mutex>
 
-#include "parallel_blocks.hpp"
 #include "point_kd_tree.hpp"
 #include "spatial_order.hpp"
 #include "rstruct/core/error.hpp"
+#include "rstruct/core/parallel.hpp"
 
 namespace rstruct::poles {
 namespace {
@@ -32,7 +31,7 @@ void check_inputs(std::span<const Point3> points, std::span<const Point3> poles)
 
 /// Runs nearest(i) → pole index for every point and fills D̂. The queries go in Morton
 /// order (consecutive searches walk the same part of the tree), in blocks that the
-/// workers take in turn, so a worker that starts late (after `side`) still gets its share.
+/// workers take in turn, so the worker that runs `side` first still gets its share after.
 template <class Nearest>
 PoleDistance run_queries(std::span<const Point3> points, std::span<const Point3> poles,
                          unsigned threads, Nearest&& nearest,
@@ -40,32 +39,24 @@ PoleDistance run_queries(std::span<const Point3> points, std::span<const Point3>
   PoleDistance result;
   result.distance.resize(points.size());
   result.nearest.resize(points.size());
-  if (points.empty()) {
-    if (side != nullptr) (*side)();
-    return result;
-  }
-  const unsigned hardware = std::max(1U, std::thread::hardware_concurrency());
-  constexpr std::size_t kBlock = 2048;
-  const std::size_t useful = std::max<std::size_t>(1, points.size() / (4 * kBlock));
-  auto t = static_cast<unsigned>(
-      std::min<std::size_t>(threads != 0 ? threads : hardware, useful));
-  if (side != nullptr) t = std::max(t, std::min(2U, threads != 0 ? threads : hardware));
-  const std::vector<std::uint32_t> order = detail::morton_order(points);
-  std::atomic<std::size_t> next_block{0};
-  detail::run_blocks(t, [&](unsigned k) {
-    // The last worker runs the side task first (alone, if there is only one).
-    if (side != nullptr && k + 1 == t) (*side)();
-    for (;;) {
-      const std::size_t begin = kBlock * next_block.fetch_add(1, std::memory_order_relaxed);
-      if (begin >= points.size()) break;
-      const std::size_t end = std::min(points.size(), begin + kBlock);
+  std::once_flag side_once;
+  const auto run_side = [&] {
+    if (side != nullptr) std::call_once(side_once, *side);
+  };
+  if (!points.empty()) {
+    const std::vector<std::uint32_t> order = detail::morton_order(points);
+    constexpr std::size_t kBlock = 2048;
+    const unsigned t = thread_count(threads, points.size(), side != nullptr ? kBlock : 4 * kBlock);
+    parallel_chunks(points.size(), t, kBlock, [&](std::size_t begin, std::size_t end, unsigned w) {
+      if (w + 1 == t && t > 1) run_side();  // the last worker, before its first block
       for (std::size_t position = begin; position < end; ++position) {
         const std::uint32_t i = order[position];
         result.nearest[i] = nearest(i);
         result.distance[i] = distance(points[i], poles[result.nearest[i]]);
       }
-    }
-  });
+    });
+  }
+  run_side();  // one thread, or the last worker got no block
   return result;
 }
 

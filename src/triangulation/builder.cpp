@@ -102,13 +102,16 @@ void Builder::run() {
   Stopwatch clock;
   // Input ids from first_last on are inserted after all the others (insert_last).
   const std::size_t first_last = n - std::min(options_.insert_last, n);
+  // Points stored in insertion order make the construction's memory accesses local
+  // (vertex ids are then ranks; input ids come back at the end). Not while a caller
+  // observes the intermediate triangulations, which must speak in input ids.
+  reorder_ = options_.spatial_sort && !options_.after_insertion;
   // The Hilbert keys that partition the parallel rounds (by input id until the points are
   // in insertion order), from the sort.
   std::vector<std::uint32_t> input_keys;
-  const bool parallel_rounds = options_.spatial_sort && !options_.after_insertion && workers_ > 1;
   if (options_.spatial_sort) {
     t_.order_ = brio_order(t_.points_, options_.seed, 4, 256, workers_,
-                           parallel_rounds ? &input_keys : nullptr);
+                           reorder_ && workers_ > 1 ? &input_keys : nullptr);
     std::stable_partition(t_.order_.begin(), t_.order_.end(),
                           [&](VertexId v) { return v < first_last; });
   } else {
@@ -130,10 +133,6 @@ void Builder::run() {
     }
   }
   const bool swap_first = choose_first_tetrahedron();
-  // Points stored in insertion order make the construction's memory accesses local
-  // (vertex ids are then ranks; input ids come back at the end). Not while a caller
-  // observes the intermediate triangulations, which must speak in input ids.
-  reorder_ = options_.spatial_sort && !options_.after_insertion;
   if (reorder_) permute_to_insertion_order();
   t_.stats_.sort_seconds = clock.seconds();
   clock.reset();

@@ -41,9 +41,10 @@ PoleDistance pole_distance(std::span<const Point3> samples, const PoleSet& poles
 
 /// The same, with `side_task` run on one of the `threads` threads (0: hardware
 /// concurrency): that thread joins the queries when the task returns, the others start at
-/// once. With one thread, the task runs first. The task must not write `poles.centre` or
-/// `poles.sample_poles` (analyse_poles runs the labeling here, which writes poles.label).
-/// An exception from the task is rethrown once the queries are done.
+/// once. With one thread (or fewer than 4,096 samples) the task runs after the queries.
+/// The task must not write `poles.centre` or `poles.sample_poles` (analyse_poles runs the
+/// labeling here, which writes poles.label). An exception from the task stops the queries
+/// and is rethrown.
 PoleDistance pole_distance_beside(std::span<const Point3> samples, const PoleSet& poles,
                                   unsigned threads, const std::function<void()>& side_task);
 
