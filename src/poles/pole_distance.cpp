@@ -29,9 +29,10 @@ void check_inputs(std::span<const Point3> points, std::span<const Point3> poles)
   }
 }
 
-/// Runs nearest(i) → pole index for every point and fills D̂. The queries go in Morton
-/// order (consecutive searches walk the same part of the tree), in blocks that the
-/// workers take in turn, so the worker that runs `side` first still gets its share after.
+/// Runs nearest(i) → pole index for every point (at least one) and fills D̂. The queries
+/// go in Morton order (consecutive searches walk the same part of the tree), in blocks
+/// that the workers take in turn, so the worker that runs `side` first still gets its
+/// share after.
 template <class Nearest>
 PoleDistance run_queries(std::span<const Point3> points, std::span<const Point3> poles,
                          unsigned threads, Nearest&& nearest,
@@ -43,27 +44,36 @@ PoleDistance run_queries(std::span<const Point3> points, std::span<const Point3>
   const auto run_side = [&] {
     if (side != nullptr) std::call_once(side_once, *side);
   };
-  if (!points.empty()) {
-    const std::vector<std::uint32_t> order = detail::morton_order(points);
-    constexpr std::size_t kBlock = 2048;
-    const unsigned t = thread_count(threads, points.size(), side != nullptr ? kBlock : 4 * kBlock);
-    parallel_chunks(points.size(), t, kBlock, [&](std::size_t begin, std::size_t end, unsigned w) {
-      if (w + 1 == t && t > 1) run_side();  // the last worker, before its first block
-      for (std::size_t position = begin; position < end; ++position) {
-        const std::uint32_t i = order[position];
-        result.nearest[i] = nearest(i);
-        result.distance[i] = distance(points[i], poles[result.nearest[i]]);
-      }
-    });
-  }
+  const std::vector<std::uint32_t> order = detail::morton_order(points);
+  constexpr std::size_t kBlock = 2048;
+  const unsigned t = thread_count(threads, points.size(), side != nullptr ? kBlock : 4 * kBlock);
+  parallel_chunks(points.size(), t, kBlock, [&](std::size_t begin, std::size_t end, unsigned w) {
+    if (w + 1 == t && t > 1) run_side();  // the last worker, before its first block
+    for (std::size_t position = begin; position < end; ++position) {
+      const std::uint32_t i = order[position];
+      result.nearest[i] = nearest(i);
+      result.distance[i] = distance(points[i], poles[result.nearest[i]]);
+    }
+  });
   run_side();  // one thread, or the last worker got no block
   return result;
 }
 
-/// The search of pole_distance(samples, poles): from the nearer of the sample's own poles.
-auto from_own_poles(std::span<const Point3> samples, const PoleSet& poles,
-                    const detail::PointKdTree& tree) {
-  return [samples, &poles, &tree](std::size_t i) {
+/// D̂ of the samples of `poles`, each search starting from the nearer of the sample's own
+/// poles; `side` (if any) as pole_distance_beside runs it.
+PoleDistance sample_pole_distance(std::span<const Point3> samples, const PoleSet& poles,
+                                  unsigned threads, const std::function<void()>* side) {
+  if (samples.size() != poles.sample_count) {
+    throw InvalidInput("pole distance: " + std::to_string(samples.size()) +
+                       " samples given for a pole set of " + std::to_string(poles.sample_count));
+  }
+  check_inputs(samples, poles.centre);
+  if (samples.empty()) {
+    if (side != nullptr) (*side)();
+    return {};
+  }
+  const detail::PointKdTree tree(poles.centre);
+  const auto from_own_poles = [&](std::size_t i) {
     std::uint32_t best = kNoPole;
     double best_d2 = HUGE_VAL;
     for (const std::uint32_t p : poles.sample_poles[i]) {
@@ -76,13 +86,7 @@ auto from_own_poles(std::span<const Point3> samples, const PoleSet& poles,
     }
     return best == kNoPole ? tree.nearest(samples[i]) : tree.nearest_from(samples[i], best, best_d2);
   };
-}
-
-void check_sample_count(std::span<const Point3> samples, const PoleSet& poles) {
-  if (samples.size() != poles.sample_count) {
-    throw InvalidInput("pole distance: " + std::to_string(samples.size()) +
-                       " samples given for a pole set of " + std::to_string(poles.sample_count));
-  }
+  return run_queries(samples, poles.centre, threads, from_own_poles, side);
 }
 
 }  // namespace
@@ -98,24 +102,12 @@ PoleDistance pole_distance(std::span<const Point3> points, std::span<const Point
 
 PoleDistance pole_distance(std::span<const Point3> samples, const PoleSet& poles,
                            unsigned threads) {
-  check_sample_count(samples, poles);
-  check_inputs(samples, poles.centre);
-  if (samples.empty()) return {};
-  const detail::PointKdTree tree(poles.centre);
-  return run_queries(samples, poles.centre, threads, from_own_poles(samples, poles, tree));
+  return sample_pole_distance(samples, poles, threads, nullptr);
 }
 
 PoleDistance pole_distance_beside(std::span<const Point3> samples, const PoleSet& poles,
                                   unsigned threads, const std::function<void()>& side_task) {
-  check_sample_count(samples, poles);
-  check_inputs(samples, poles.centre);
-  if (samples.empty()) {
-    side_task();
-    return {};
-  }
-  const detail::PointKdTree tree(poles.centre);
-  return run_queries(samples, poles.centre, threads, from_own_poles(samples, poles, tree),
-                     &side_task);
+  return sample_pole_distance(samples, poles, threads, &side_task);
 }
 
 PoleDistance pole_distance_brute_force(std::span<const Point3> points,

@@ -62,6 +62,11 @@ class HilbertKeyer {
   double scale_[3] = {0, 0, 0};
 };
 
+/// The top 32 bits of a 3·kSortBits-bit Hilbert key (hilbert_keys()).
+std::uint32_t top_key_bits(std::uint64_t hilbert_key) {
+  return static_cast<std::uint32_t>(hilbert_key >> (3 * kSortBits - 32));
+}
+
 bool before(const KeyedIndex& a, const KeyedIndex& b) {
   return a.key < b.key || (a.key == b.key && a.index < b.index);
 }
@@ -213,7 +218,7 @@ std::vector<std::uint32_t> hilbert_keys(std::span<const Point3> points) {
   const HilbertKeyer keyer(points, kSortBits);
   std::vector<std::uint32_t> keys(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
-    keys[i] = static_cast<std::uint32_t>(keyer.key(points[i]) >> (3 * kSortBits - 32));
+    keys[i] = top_key_bits(keyer.key(points[i]));
   }
   return keys;
 }
@@ -245,8 +250,7 @@ std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint6
   if (keys != nullptr) {  // hilbert_keys(points), from the keys at hand
     keys->resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-      (*keys)[i] = static_cast<std::uint32_t>(
-          (items[i].key & ((std::uint64_t{1} << kRoundShift) - 1)) >> (3 * kSortBits - 32));
+      (*keys)[i] = top_key_bits(items[i].key & ((std::uint64_t{1} << kRoundShift) - 1));
     }
   }
   sort_by_key(items, threads);
