@@ -26,7 +26,9 @@
 #include <vector>
 
 #include "rstruct/complex/orthosphere_predicates.hpp"
+#include "rstruct/core/large_blocks.hpp"
 #include "rstruct/core/report.hpp"
+#include "rstruct/core/stopwatch.hpp"
 #include "rstruct/pipeline/seed_polytope.hpp"
 #include "rstruct/poles/pole_analysis.hpp"
 #include "rstruct/sampling/sample_request.hpp"
@@ -287,5 +289,12 @@ int main(int argc, char** argv) {
                   levels[l].rho, levels[l].shrink, checksums[l].c_str());
     level_times[l].print(title);
   }
+  const rstruct::LargeBlockStats blocks = rstruct::large_block_stats();
+  std::printf("large blocks (>= 8 MiB): %llu fresh, %llu served from freed pages, %llu "
+              "ranges given back; peak memory %.0f MiB\n",
+              static_cast<unsigned long long>(blocks.fresh),
+              static_cast<unsigned long long>(blocks.reused),
+              static_cast<unsigned long long>(blocks.released),
+              static_cast<double>(rstruct::peak_memory_bytes()) / (1 << 20));
   return 0;
 }

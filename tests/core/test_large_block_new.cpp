@@ -8,7 +8,10 @@
 #include <new>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
+
+#include "rstruct/core/large_blocks.hpp"
 
 namespace {
 
@@ -89,5 +92,96 @@ TEST_CASE("an impossible size throws bad_alloc, or gives null without throwing")
   CHECK_THROWS_AS(::operator new[](absurd / 2), std::bad_alloc);
   CHECK(::operator new(absurd, std::nothrow) == nullptr);
   CHECK(::operator new[](absurd, std::nothrow) == nullptr);
+}
+#endif
+
+#if defined(__linux__)
+namespace {
+
+constexpr std::size_t kMiB = std::size_t{1} << 20;
+
+/// Frees every cached range: a request no cached range can hold takes fresh pages, and
+/// gives every cached range back first.
+void empty_cache() {
+  // 1 TiB: whether the mapping then fails or not, the cache was emptied first; if it
+  // succeeds, delete unmaps it (it exceeds the cache's limit).
+  ::operator delete(::operator new(std::size_t{1} << 40, std::nothrow));
+}
+
+}  // namespace
+
+TEST_CASE("freed large blocks are served again, carved to size, and merged when adjacent") {
+  empty_cache();
+  const rstruct::LargeBlockStats s0 = rstruct::large_block_stats();
+  CHECK(s0.cached_bytes == 0);
+  auto* a = static_cast<unsigned char*>(::operator new(64 * kMiB));
+  a[0] = 1;
+  a[64 * kMiB - 1] = 2;
+  ::operator delete(a);
+  const rstruct::LargeBlockStats s1 = rstruct::large_block_stats();
+  CHECK(s1.fresh == s0.fresh + 1);
+  CHECK(s1.cached_bytes == 64 * kMiB);
+
+  // A smaller request takes the front of the freed block; a second one the next pages.
+  auto* b = static_cast<unsigned char*>(::operator new(20 * kMiB));
+  auto* c = static_cast<unsigned char*>(::operator new(10 * kMiB + 1));
+  CHECK(b == a);
+  CHECK(c == a + 20 * kMiB);
+  const rstruct::LargeBlockStats s2 = rstruct::large_block_stats();
+  CHECK(s2.reused == s1.reused + 2);
+  CHECK(s2.fresh == s1.fresh);
+  CHECK(s2.cached_bytes == (64 - 20 - 12) * kMiB);  // 10 MiB + 1 byte takes 12 MiB
+  // Writable to the end, and independent of each other.
+  for (std::size_t i = 0; i < 20 * kMiB; i += 4096) b[i] = 3;
+  for (std::size_t i = 0; i < 10 * kMiB + 1; i += 4096) c[i] = 4;
+  c[10 * kMiB] = 5;
+  CHECK(b[20 * kMiB - 4096] == 3);
+  CHECK(c[0] == 4);
+
+  // Freed again, the three ranges merge into the whole block: a 64 MiB request fits.
+  ::operator delete(c);
+  ::operator delete(b);
+  CHECK(rstruct::large_block_stats().cached_blocks == 1);
+  auto* d = static_cast<unsigned char*>(::operator new(64 * kMiB));
+  CHECK(d == a);
+  CHECK(rstruct::large_block_stats().fresh == s1.fresh);
+  ::operator delete(d);
+}
+
+TEST_CASE("a request no cached range holds gives the cache back before taking fresh pages") {
+  empty_cache();
+  void* a = ::operator new(16 * kMiB);
+  ::operator delete(a);
+  CHECK(rstruct::large_block_stats().cached_bytes == 16 * kMiB);
+  const std::uint64_t released = rstruct::large_block_stats().released;
+  void* big = ::operator new(32 * kMiB);
+  const rstruct::LargeBlockStats s = rstruct::large_block_stats();
+  CHECK(s.cached_bytes == 0);
+  CHECK(s.released == released + 1);
+  CHECK(address(big) % kHugePage == 0);
+  ::operator delete(big);
+}
+
+TEST_CASE("large blocks from two threads at once stay intact") {
+  empty_cache();
+  const auto work = [](unsigned char tag, std::size_t* bad) {
+    for (int round = 0; round < 40; ++round) {
+      const std::size_t bytes = (8 + static_cast<std::size_t>((round * 7 + tag) % 13)) * kMiB + 123;
+      std::unique_ptr<unsigned char[]> block(new unsigned char[bytes]);
+      for (std::size_t i = 0; i < bytes; i += 4096) block[i] = tag;
+      block[bytes - 1] = tag;
+      for (std::size_t i = 0; i < bytes; i += 4096) *bad += block[i] != tag;
+      *bad += block[bytes - 1] != tag;
+    }
+  };
+  std::size_t bad1 = 0, bad2 = 0;
+  {
+    std::thread t(work, static_cast<unsigned char>(1), &bad1);
+    work(2, &bad2);
+    t.join();
+  }
+  CHECK(bad1 == 0);
+  CHECK(bad2 == 0);
+  CHECK(rstruct::large_block_stats().live_blocks == 0);
 }
 #endif

@@ -1,11 +1,12 @@
 #pragma once
 // An allocator for large, randomly accessed arrays (the cells of a triangulation): blocks of
-// 2 MiB and more are 2 MiB aligned and advised for transparent huge pages, so that filling
-// them takes one page fault per 2 MiB instead of per 4 KiB, and random access misses the
-// TLB far less. Smaller blocks come from operator new. Pages never touched still cost no
+// 2 MiB and more are advised for transparent huge pages (their whole 2 MiB pages), so that
+// filling them takes one page fault per 2 MiB instead of per 4 KiB, and random access misses
+// the TLB far less. Smaller blocks come from operator new. Pages never touched still cost no
 // memory (the kernel backs a huge page only when it is first written).
 
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <new>
 #include <utility>
@@ -29,12 +30,16 @@ class HugePageAllocator {
     const std::size_t bytes = n * sizeof(T);
     if (n > static_cast<std::size_t>(-1) / sizeof(T)) throw std::bad_array_new_length();
     if (bytes < kHuge) return static_cast<T*>(::operator new(bytes, std::align_val_t{alignof(T)}));
-    const std::size_t rounded = (bytes + kHuge - 1) / kHuge * kHuge;
-    void* p = std::aligned_alloc(kHuge, rounded);
-    if (p == nullptr) throw std::bad_alloc();
+    // Through the global operator new: in the programs that replace it
+    // (src/core/large_block_new.cpp) the block is 2 MiB aligned, advised, and may reuse
+    // pages a previous stage freed. Elsewhere it is malloc's, and the advice covers its
+    // whole 2 MiB pages.
+    void* p = ::operator new(bytes);
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
+    const auto first = (reinterpret_cast<std::uintptr_t>(p) + kHuge - 1) / kHuge * kHuge;
+    const auto last = (reinterpret_cast<std::uintptr_t>(p) + bytes) / kHuge * kHuge;
     // Advice only: without transparent huge pages the block works as ordinary memory.
-    (void)madvise(p, rounded, MADV_HUGEPAGE);
+    if (last > first) (void)madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
 #endif
     return static_cast<T*>(p);
   }
@@ -43,7 +48,7 @@ class HugePageAllocator {
     if (n * sizeof(T) < kHuge) {
       ::operator delete(p, std::align_val_t{alignof(T)});
     } else {
-      std::free(p);
+      ::operator delete(p);
     }
   }
 
