@@ -1,27 +1,36 @@
 #include "reduction.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 #include "rstruct/core/assert.hpp"
+#include "rstruct/core/parallel.hpp"
 
 namespace rstruct::setcover::detail {
 
 namespace {
 
+/// Items per round of a domination pass, and per parallel chunk of a round.
+constexpr std::int32_t kRound = 1 << 16;
+constexpr std::size_t kChunk = 1 << 10;
+
 /// Alive flags and alive counts over the original instance.
 class Presolver {
  public:
-  Presolver(const Instance& inst, double deadline, const Stopwatch& clock, std::int64_t work_limit)
+  Presolver(const Instance& inst, double deadline, const Stopwatch& clock, std::int64_t work_limit,
+            unsigned threads)
       : inst_(inst),
         deadline_(deadline),
         work_limit_(work_limit),
+        threads_(thread_count(threads, std::numeric_limits<std::size_t>::max())),
         clock_(clock),
         row_alive_(static_cast<std::size_t>(inst.num_rows()), 1),
         col_alive_(static_cast<std::size_t>(inst.num_cols()), 1),
         row_len_(static_cast<std::size_t>(inst.num_rows())),
         col_len_(static_cast<std::size_t>(inst.num_cols())),
-        mark_(static_cast<std::size_t>(std::max(inst.num_rows(), inst.num_cols())), 0) {
+        mark_size_(static_cast<std::size_t>(std::max(inst.num_rows(), inst.num_cols()))),
+        marks_(threads_) {
     for (std::int32_t i = 0; i < inst.num_rows(); ++i) row_len_[i] = static_cast<std::int32_t>(inst.row(i).size());
     for (std::int32_t j = 0; j < inst.num_cols(); ++j) col_len_[j] = static_cast<std::int32_t>(inst.column(j).size());
   }
@@ -92,70 +101,126 @@ class Presolver {
   }
 
   /// Column j is dominated by k when its alive rows are a subset of k's and c_k <= c_j
-  /// (identical columns: the larger index goes).
+  /// (identical columns: the larger index goes). Every dominated column has an undominated
+  /// dominator (a strict partial order), and no row dies in this pass, so the columns
+  /// removed do not depend on the order of the checks: they run in parallel against the
+  /// state at the start of each round (see run_pass).
   bool remove_dominated_cols() {
-    bool changed = false;
-    for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
-      if (!col_alive_[j]) continue;
-      if (out_of_work() || ((j & 1023) == 0 && out_of_time())) break;
-      std::int32_t pivot = -1;
-      for (std::int32_t i : inst_.column(j)) {
-        if (row_alive_[i] && (pivot < 0 || row_len_[i] < row_len_[pivot])) pivot = i;
-      }
-      for (std::int32_t i : inst_.column(j)) mark_[i] = row_alive_[i];
-      work_ += 3 * static_cast<std::int64_t>(inst_.column(j).size()) +
-               static_cast<std::int64_t>(inst_.row(pivot).size());
-      bool dominated = false;
-      for (std::int32_t k : inst_.row(pivot)) {
-        if (k == j || !col_alive_[k] || col_len_[k] < col_len_[j] || inst_.cost(k) > inst_.cost(j)) continue;
-        if (col_len_[k] == col_len_[j] && inst_.cost(k) == inst_.cost(j) && k > j) continue;
-        if ((col_sig_[j] & ~col_sig_[k]) != 0) continue;
-        work_ += static_cast<std::int64_t>(inst_.column(k).size());
-        std::int32_t hits = 0;
-        for (std::int32_t i : inst_.column(k)) hits += mark_[i];
-        if (hits == col_len_[j]) {
-          dominated = true;
-          break;
-        }
-      }
-      for (std::int32_t i : inst_.column(j)) mark_[i] = 0;
-      if (dominated) {
-        kill_col(j);
-        ++out.dominated_cols;
-        changed = true;
-      }
-    }
-    return changed;
+    return run_pass(
+        inst_.num_cols(), [&](std::int32_t j) { return col_alive_[j] != 0; },
+        [&](std::int32_t j, std::vector<std::int32_t>& mark, std::vector<std::int32_t>& kills) {
+          std::int32_t pivot = -1;
+          for (std::int32_t i : inst_.column(j)) {
+            if (row_alive_[i] && (pivot < 0 || row_len_[i] < row_len_[pivot])) pivot = i;
+          }
+          for (std::int32_t i : inst_.column(j)) mark[i] = row_alive_[i];
+          std::int64_t work = 3 * static_cast<std::int64_t>(inst_.column(j).size()) +
+                              static_cast<std::int64_t>(inst_.row(pivot).size());
+          for (std::int32_t k : inst_.row(pivot)) {
+            if (k == j || !col_alive_[k] || col_len_[k] < col_len_[j] || inst_.cost(k) > inst_.cost(j)) continue;
+            if (col_len_[k] == col_len_[j] && inst_.cost(k) == inst_.cost(j) && k > j) continue;
+            if ((col_sig_[j] & ~col_sig_[k]) != 0) continue;
+            work += static_cast<std::int64_t>(inst_.column(k).size());
+            std::int32_t hits = 0;
+            for (std::int32_t i : inst_.column(k)) hits += mark[i];
+            if (hits == col_len_[j]) {
+              kills.push_back(j);
+              break;
+            }
+          }
+          for (std::int32_t i : inst_.column(j)) mark[i] = 0;
+          return work;
+        },
+        [&](std::int32_t j) {
+          if (!col_alive_[j]) return false;
+          kill_col(j);
+          ++out.dominated_cols;
+          return true;
+        });
   }
 
   /// Row i is dominated by row k when k's alive columns are a subset of i's: covering k
-  /// covers i. Identical rows: the larger index goes.
+  /// covers i. Identical rows: the larger index goes. As for columns, the rows removed do
+  /// not depend on the order (a column dies only once all its rows have), so the checks
+  /// run in parallel.
   bool remove_dominated_rows() {
-    bool changed = false;
-    for (std::int32_t k = 0; k < inst_.num_rows(); ++k) {
-      if (!row_alive_[k]) continue;
-      if (out_of_work() || ((k & 1023) == 0 && out_of_time())) break;
-      std::int32_t pivot = -1;
-      for (std::int32_t j : inst_.row(k)) {
-        if (col_alive_[j] && (pivot < 0 || col_len_[j] < col_len_[pivot])) pivot = j;
-      }
-      for (std::int32_t j : inst_.row(k)) mark_[j] = col_alive_[j];
-      work_ += 3 * static_cast<std::int64_t>(inst_.row(k).size()) +
-               static_cast<std::int64_t>(inst_.column(pivot).size());
-      for (std::int32_t i : inst_.column(pivot)) {
-        if (i == k || !row_alive_[i] || row_len_[i] < row_len_[k]) continue;
-        if (row_len_[i] == row_len_[k] && i < k) continue;
-        if ((row_sig_[k] & ~row_sig_[i]) != 0) continue;
-        work_ += static_cast<std::int64_t>(inst_.row(i).size());
-        std::int32_t hits = 0;
-        for (std::int32_t j : inst_.row(i)) hits += mark_[j];
-        if (hits == row_len_[k]) {
+    return run_pass(
+        inst_.num_rows(), [&](std::int32_t k) { return row_alive_[k] != 0; },
+        [&](std::int32_t k, std::vector<std::int32_t>& mark, std::vector<std::int32_t>& kills) {
+          std::int32_t pivot = -1;
+          for (std::int32_t j : inst_.row(k)) {
+            if (col_alive_[j] && (pivot < 0 || col_len_[j] < col_len_[pivot])) pivot = j;
+          }
+          for (std::int32_t j : inst_.row(k)) mark[j] = col_alive_[j];
+          std::int64_t work = 3 * static_cast<std::int64_t>(inst_.row(k).size()) +
+                              static_cast<std::int64_t>(inst_.column(pivot).size());
+          for (std::int32_t i : inst_.column(pivot)) {
+            if (i == k || !row_alive_[i] || row_len_[i] < row_len_[k]) continue;
+            if (row_len_[i] == row_len_[k] && i < k) continue;
+            if ((row_sig_[k] & ~row_sig_[i]) != 0) continue;
+            work += static_cast<std::int64_t>(inst_.row(i).size());
+            std::int32_t hits = 0;
+            for (std::int32_t j : inst_.row(i)) hits += mark[j];
+            if (hits == row_len_[k]) kills.push_back(i);
+          }
+          for (std::int32_t j : inst_.row(k)) mark[j] = 0;
+          return work;
+        },
+        [&](std::int32_t i) {
+          if (!row_alive_[i]) return false;
           kill_row(i);
           ++out.dominated_rows;
-          changed = true;
+          return true;
+        });
+  }
+
+  /// One domination pass over items 0..count−1, in rounds of kRound items. In a round,
+  /// check(item, mark, kills) runs in parallel on the items alive at the round's start,
+  /// reading only the state, returning its work and appending the items it removes; then
+  /// the rounds' results are applied in item order — an item still alive has its work
+  /// counted and its removals made with remove(x) (false if x was already gone) — until
+  /// the work limit is passed, as the sequential pass would stop. The work and the result
+  /// depend on kRound, never on the number of threads.
+  template <class Alive, class Check, class Remove>
+  bool run_pass(std::int32_t count, Alive&& alive, Check&& check, Remove&& remove) {
+    struct Verdict {
+      std::int32_t item;
+      std::int64_t work;
+      std::uint32_t kills_end;  // end of its removals in the chunk's kill list
+    };
+    struct ChunkResult {
+      std::vector<Verdict> verdicts;
+      std::vector<std::int32_t> kills;
+    };
+    bool changed = false;
+    std::vector<ChunkResult> chunks;
+    for (std::int32_t begin = 0; begin < count; begin += kRound) {
+      if (out_of_work() || out_of_time()) break;
+      const std::int32_t end = std::min(count, begin + kRound);
+      const auto n = static_cast<std::size_t>(end - begin);
+      chunks.assign((n + kChunk - 1) / kChunk, ChunkResult{});
+      parallel_chunks(n, threads_, kChunk, [&](std::size_t b, std::size_t e, unsigned worker) {
+        ChunkResult& r = chunks[b / kChunk];
+        std::vector<std::int32_t>& mark = marks_[worker];
+        if (mark.empty()) mark.assign(mark_size_, 0);
+        for (std::size_t x = b; x < e; ++x) {
+          const auto item = static_cast<std::int32_t>(begin + static_cast<std::int32_t>(x));
+          if (!alive(item)) continue;
+          const std::int64_t work = check(item, mark, r.kills);
+          r.verdicts.push_back({item, work, static_cast<std::uint32_t>(r.kills.size())});
+        }
+      });
+      for (const ChunkResult& r : chunks) {
+        std::uint32_t from = 0;
+        for (const Verdict& v : r.verdicts) {
+          if (out_of_work()) return changed;
+          if (alive(v.item)) {
+            work_ += v.work;
+            for (std::uint32_t t = from; t < v.kills_end; ++t) changed = remove(r.kills[t]) || changed;
+          }
+          from = v.kills_end;
         }
       }
-      for (std::int32_t j : inst_.row(k)) mark_[j] = 0;
     }
     return changed;
   }
@@ -178,11 +243,13 @@ class Presolver {
   const Instance& inst_;
   double deadline_;
   std::int64_t work_limit_;
+  unsigned threads_;
   std::int64_t work_ = 0;
   const Stopwatch& clock_;
   std::vector<char> row_alive_, col_alive_;
   std::vector<std::int32_t> row_len_, col_len_;
-  std::vector<std::int32_t> mark_;
+  std::size_t mark_size_;
+  std::vector<std::vector<std::int32_t>> marks_;  // per worker, all zero between checks
   std::vector<std::uint64_t> row_sig_, col_sig_;
 };
 
@@ -211,7 +278,10 @@ void Presolver::split_components() {
       }
     }
   }
+  // Per alive row: its component and its index there (the roots are looked up once here,
+  // not once per entry below).
   std::vector<std::int32_t> comp_of_root(static_cast<std::size_t>(m), -1);
+  std::vector<std::int32_t> comp_of_row(static_cast<std::size_t>(m), -1);
   std::vector<std::int32_t> local(static_cast<std::size_t>(m), -1);
   for (std::int32_t i = 0; i < m; ++i) {
     if (!row_alive_[i]) continue;
@@ -220,10 +290,13 @@ void Presolver::split_components() {
       comp_of_root[r] = static_cast<std::int32_t>(out.components.size());
       out.components.emplace_back();
     }
+    comp_of_row[i] = comp_of_root[r];
     auto& c = out.components[static_cast<std::size_t>(comp_of_root[r])];
     local[i] = static_cast<std::int32_t>(c.rows.size());
     c.rows.push_back(i);
   }
+  parent = {};
+  comp_of_root = {};
   std::vector<std::vector<std::int64_t>> starts(out.components.size(), std::vector<std::int64_t>{0});
   std::vector<std::vector<std::int32_t>> entries(out.components.size());
   std::vector<std::vector<double>> costs(out.components.size());
@@ -232,8 +305,8 @@ void Presolver::split_components() {
   const auto visit = [&](std::int32_t j, auto&& entry) {
     std::int32_t comp = -1;
     for (std::int32_t i : inst_.column(j)) {
-      if (!row_alive_[i]) continue;
-      comp = comp_of_root[find_root(parent, i)];
+      if (comp_of_row[i] < 0) continue;  // a dead row
+      comp = comp_of_row[i];
       entry(comp, i);
     }
     return comp;
@@ -275,8 +348,8 @@ void Presolver::split_components() {
 }  // namespace
 
 Reduction reduce(const Instance& inst, bool use_domination, double deadline, const Stopwatch& clock,
-                 std::int64_t work_limit) {
-  Presolver p(inst, deadline, clock, work_limit);
+                 std::int64_t work_limit, unsigned threads) {
+  Presolver p(inst, deadline, clock, work_limit, threads);
   p.take_zero_cost();
   p.force_singletons();
   // Domination passes are the expensive part: two rounds catch nearly everything.

@@ -34,8 +34,9 @@ struct Reduction {
 
 /// Reduces `inst`. Domination checks stop (leaving a valid, less reduced instance) once
 /// `clock` passes `deadline` or they have scanned more than `work_limit` entries (0: no
-/// work limit). \pre every row is covered by some column.
+/// work limit). They run on `threads` threads (0: hardware concurrency); the result and
+/// the work do not depend on that number. \pre every row is covered by some column.
 Reduction reduce(const Instance& inst, bool use_domination, double deadline, const Stopwatch& clock,
-                 std::int64_t work_limit = 0);
+                 std::int64_t work_limit = 0, unsigned threads = 1);
 
 }  // namespace rstruct::setcover::detail

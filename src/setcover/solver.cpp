@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <exception>
+#include <limits>
 #include <thread>
 
 #include "branch_and_bound.hpp"
@@ -41,6 +43,10 @@ struct ComponentResult {
 /// Components whose surviving columns number at most this get an exact search first.
 constexpr std::int32_t kExactColumns = 60;
 constexpr std::int64_t kExactNodes = 300'000;
+/// Instances with at least this many entries run the domination checks in parallel.
+constexpr std::int64_t kParallelReductionEntries = 100'000;
+/// Components with at least this many entries run their greedy beside the first ascent.
+constexpr std::int64_t kGreedyBesideEntries = 1'000'000;
 
 struct Budget {
   double deadline = 0.0;              ///< seconds on the solver clock
@@ -54,8 +60,8 @@ struct Budget {
 /// Columns j that may still be in a cover cheaper than `ub`: bound + reduced_j must stay
 /// below it (any cover containing j costs at least L(u) + max(0, r_j)).
 std::vector<char> reduced_cost_filter(const Instance& inst, const detail::LagrangianState& st,
-                                      std::vector<double>& reduced) {
-  detail::lagrangian_bound(inst, st.u, &reduced);
+                                      std::vector<double>& reduced, unsigned threads) {
+  detail::lagrangian_bound(inst, st.u, &reduced, threads);
   const double slack = 1e-9 * std::max(1.0, std::abs(st.cover_cost));
   const double limit = inst.has_integer_costs() ? st.cover_cost - 1.0 + slack : st.cover_cost - slack;
   std::vector<char> allowed(static_cast<std::size_t>(inst.num_cols()), 0);
@@ -69,7 +75,7 @@ std::vector<char> reduced_cost_filter(const Instance& inst, const detail::Lagran
 void improve_by_local_search(const Instance& inst, detail::LagrangianState& st,
                              const Budget& budget, const Stopwatch& clock, ComponentResult& out) {
   std::vector<double> reduced;
-  const std::vector<char> allowed = reduced_cost_filter(inst, st, reduced);
+  const std::vector<char> allowed = reduced_cost_filter(inst, st, reduced, budget.threads);
   std::vector<std::int32_t> map;
   std::vector<std::int64_t> start{0};
   std::vector<std::int32_t> entries;
@@ -171,29 +177,55 @@ ComponentResult solve_component(const Instance& inst, const Budget& budget, cons
   ComponentResult out;
   const double t0 = clock.seconds();
   detail::LagrangianState st;
-  st.cover = detail::greedy_cover(inst);
-  st.cover_cost = inst.cost_of(st.cover);
+  // The greedy cover and the first multipliers do not depend on each other: on a large
+  // component with two threads or more the greedy runs on its own thread meanwhile.
+  const unsigned threads = std::max(1u, budget.threads);
+  const bool beside = threads > 1 && inst.num_entries() >= kGreedyBesideEntries;
+  std::exception_ptr greedy_error;
+  {
+    const auto greedy = [&] {
+      try {
+        st.cover = detail::greedy_cover(inst);
+        st.cover_cost = inst.cost_of(st.cover);
+        out.seconds_to_best = clock.seconds();
+      } catch (...) {
+        greedy_error = std::current_exception();
+      }
+    };
+    std::jthread greedy_thread;
+    if (beside) {
+      greedy_thread = std::jthread(greedy);
+    } else {
+      greedy();
+    }
+    const unsigned ascent_threads = beside ? threads - 1 : threads;
+    st.u = detail::initial_multipliers(inst);
+    st.bound = detail::lagrangian_bound(inst, st.u, nullptr, ascent_threads);
+    // Coordinate ascent first: a few O(entries) sweeps give a good bound on large sparse
+    // instances, where each subgradient iteration is as expensive as a sweep.
+    if (clock.seconds() < budget.deadline) {
+      detail::coordinate_ascent(inst, st, 5, t0 + 0.2 * std::max(0.0, budget.deadline - t0),
+                                clock, ascent_threads);
+    } else {
+      out.timed_out = true;
+    }
+  }  // joins the greedy
+  if (greedy_error) std::rethrow_exception(greedy_error);
   out.greedy_cost = st.cover_cost;
-  out.seconds_to_best = clock.seconds();
-  st.u = detail::initial_multipliers(inst);
-  st.bound = detail::lagrangian_bound(inst, st.u);
-  // Coordinate ascent first: a few O(entries) sweeps give a good bound on large sparse
-  // instances, where each subgradient iteration is as expensive as a sweep.
-  if (clock.seconds() < budget.deadline) {
-    detail::coordinate_ascent(inst, st, 5, t0 + 0.2 * std::max(0.0, budget.deadline - t0), clock);
-  } else {
-    out.timed_out = true;
-  }
   const double now = clock.seconds();
   out.greedy_seconds = now - t0;
   detail::SubgradientOptions so;
   so.max_iterations = budget.subgradient_iterations;
   so.deadline = now + 0.3 * std::max(0.0, budget.deadline - now);
+  so.threads = threads;
   const double before = st.cover_cost;
   // Past the deadline only the mandatory work (a cover, multipliers) is done.
   if (clock.seconds() < so.deadline) {
     detail::subgradient(inst, st, so, clock);
-    detail::coordinate_ascent(inst, st, 20, so.deadline, clock);
+    // The last iteration's greedy may still run (state.pending): one thread fewer here.
+    detail::coordinate_ascent(inst, st, 20, so.deadline, clock,
+                              st.pending && threads > 1 ? threads - 1 : threads);
+    detail::finish_heuristic(inst, st);
   } else {
     out.timed_out = true;
   }
@@ -289,7 +321,8 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
   Solution sol;
   const detail::Reduction red =
       detail::reduce(inst, options.use_domination, 0.5 * options.time_limit, clock,
-                     domination_work_limit(options, inst.num_entries()));
+                     domination_work_limit(options, inst.num_entries()),
+                     inst.num_entries() >= kParallelReductionEntries ? options.threads : 1);
   sol.stats.reduction_work = red.work;
   sol.stats.forced_columns = red.forced_cols;
   sol.stats.dominated_rows = red.dominated_rows;
@@ -317,7 +350,8 @@ Solution solve(const Instance& inst, const SolverOptions& options) {
     budget.deadline = now + share * std::max(0.0, options.time_limit - now);
     budget.seed = options.seed * 0x9E3779B97F4A7C15ULL + k;
     budget.streams = options.local_search_streams;
-    budget.threads = thread_count(options.threads, static_cast<std::size_t>(budget.streams));
+    // All of them for the pricing passes; the local search uses at most one per stream.
+    budget.threads = thread_count(options.threads, std::numeric_limits<std::size_t>::max());
     budget.subgradient_iterations = options.max_subgradient_iterations;
     if (options.max_local_search_iterations > 0) {
       budget.local_search_iterations =

@@ -1,10 +1,12 @@
 #include "subgradient.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
 #include "greedy.hpp"
+#include "rstruct/core/parallel.hpp"
 
 namespace rstruct::setcover::detail {
 
@@ -15,20 +17,31 @@ constexpr std::int64_t kCoreThreshold = 200'000;
 constexpr std::size_t kCorePerRow = 5;
 constexpr std::int32_t kPriceEvery = 10;
 constexpr std::int32_t kStepWindow = 20;
+/// Below this many entries the O(entries) passes stay on one thread.
+constexpr std::int64_t kParallelEntries = 1'000'000;
+constexpr std::size_t kRowChunk = 1 << 13;
+constexpr std::size_t kColumnChunk = 1 << 13;
 
 /// CFT's core: for every row its kCorePerRow columns of smallest reduced cost, plus every
 /// column with reduced cost below a small threshold, plus the incumbent cover.
 std::vector<std::int32_t> build_core(const Instance& inst, const std::vector<double>& reduced,
-                                     std::span<const std::int32_t> cover, double threshold) {
+                                     std::span<const std::int32_t> cover, double threshold,
+                                     unsigned threads) {
   std::vector<char> in(static_cast<std::size_t>(inst.num_cols()), 0);
-  std::vector<std::pair<double, std::int32_t>> tmp;
-  for (std::int32_t i = 0; i < inst.num_rows(); ++i) {
-    tmp.clear();
-    for (std::int32_t j : inst.row(i)) tmp.emplace_back(reduced[j], j);
-    const std::size_t k = std::min(kCorePerRow, tmp.size());
-    std::partial_sort(tmp.begin(), tmp.begin() + static_cast<std::ptrdiff_t>(k), tmp.end());
-    for (std::size_t t = 0; t < k; ++t) in[tmp[t].second] = 1;
-  }
+  // Rows in parallel: the mask is a union, the same whatever the chunks.
+  parallel_chunks(static_cast<std::size_t>(inst.num_rows()), threads, kRowChunk,
+                  [&](std::size_t begin, std::size_t end, unsigned /*worker*/) {
+    std::vector<std::pair<double, std::int32_t>> tmp;
+    for (auto i = static_cast<std::int32_t>(begin); i < static_cast<std::int32_t>(end); ++i) {
+      tmp.clear();
+      for (std::int32_t j : inst.row(i)) tmp.emplace_back(reduced[j], j);
+      const std::size_t k = std::min(kCorePerRow, tmp.size());
+      std::partial_sort(tmp.begin(), tmp.begin() + static_cast<std::ptrdiff_t>(k), tmp.end());
+      for (std::size_t t = 0; t < k; ++t) {
+        std::atomic_ref<char>(in[tmp[t].second]).store(1, std::memory_order_relaxed);
+      }
+    }
+  });
   for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
     if (reduced[j] < threshold) in[j] = 1;
   }
@@ -86,15 +99,33 @@ class StepControl {
 }  // namespace
 
 double lagrangian_bound(const Instance& inst, std::span<const double> u,
-                        std::vector<double>* reduced) {
+                        std::vector<double>* reduced, unsigned threads) {
   double bound = 0.0;
   for (double x : u) bound += x;
-  if (reduced) reduced->resize(static_cast<std::size_t>(inst.num_cols()));
-  for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
-    double r = inst.cost(j);
-    for (std::int32_t i : inst.column(j)) r -= u[i];
-    if (r < 0) bound += r;
-    if (reduced) (*reduced)[j] = r;
+  const auto n = static_cast<std::size_t>(inst.num_cols());
+  if (threads == 1 || inst.num_entries() < kParallelEntries) {
+    if (reduced) reduced->resize(n);
+    for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
+      double r = inst.cost(j);
+      for (std::int32_t i : inst.column(j)) r -= u[i];
+      if (r < 0) bound += r;
+      if (reduced) (*reduced)[j] = r;
+    }
+    return bound;
+  }
+  // The reduced costs in parallel, then the same sum in the same order: the same double.
+  std::vector<double> local;
+  std::vector<double>& r = reduced != nullptr ? *reduced : local;
+  r.resize(n);
+  parallel_chunks(n, threads, kColumnChunk, [&](std::size_t begin, std::size_t end, unsigned) {
+    for (auto j = static_cast<std::int32_t>(begin); j < static_cast<std::int32_t>(end); ++j) {
+      double x = inst.cost(j);
+      for (std::int32_t i : inst.column(j)) x -= u[i];
+      r[j] = x;
+    }
+  });
+  for (const double x : r) {
+    if (x < 0) bound += x;
   }
   return bound;
 }
@@ -122,10 +153,10 @@ bool bound_closes_gap(const Instance& inst, double bound, double cost) {
 }
 
 void coordinate_ascent(const Instance& inst, LagrangianState& state, std::int32_t sweeps,
-                       double deadline, const Stopwatch& clock) {
+                       double deadline, const Stopwatch& clock, unsigned threads) {
   std::vector<double> u = state.u;
   std::vector<double> reduced;
-  lagrangian_bound(inst, u, &reduced);
+  lagrangian_bound(inst, u, &reduced, threads);
   std::vector<std::int32_t> order(static_cast<std::size_t>(inst.num_rows()));
   for (std::int32_t i = 0; i < inst.num_rows(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) {
@@ -146,7 +177,7 @@ void coordinate_ascent(const Instance& inst, LagrangianState& state, std::int32_
       u[i] = next;
     }
     // Recompute from scratch: the incremental reduced costs drift by rounding.
-    const double value = lagrangian_bound(inst, u, &reduced);
+    const double value = lagrangian_bound(inst, u, &reduced, threads);
     if (value > state.bound) {
       state.bound = value;
       state.u = u;
@@ -166,14 +197,18 @@ void subgradient(const Instance& inst, LagrangianState& state, const Subgradient
   std::vector<double> u = state.u;
   std::vector<std::int32_t> core;
   std::vector<char> core_mask;
-  auto price = [&]() {
-    const double full = lagrangian_bound(inst, u, &reduced);
+  // Prices every column at u (a bound valid for the whole instance) and, unless this is
+  // the last pricing, rebuilds the core from the reduced costs.
+  auto price = [&](bool last) {
+    const unsigned threads =
+        state.pending && options.threads > 1 ? options.threads - 1 : options.threads;
+    const double full = lagrangian_bound(inst, u, &reduced, threads);
     if (full > state.bound) {
       state.bound = full;
       state.u = u;
     }
-    if (use_core) {
-      core = build_core(inst, reduced, state.cover, 0.0);
+    if (use_core && !last) {
+      core = build_core(inst, reduced, state.cover, 0.0, options.threads);
       core_mask.assign(static_cast<std::size_t>(inst.num_cols()), 0);
       for (std::int32_t j : core) core_mask[j] = 1;
     }
@@ -182,7 +217,7 @@ void subgradient(const Instance& inst, LagrangianState& state, const Subgradient
     core.resize(static_cast<std::size_t>(inst.num_cols()));
     for (std::int32_t j = 0; j < inst.num_cols(); ++j) core[j] = j;
   }
-  price();
+  price(false);
   double lambda = 0.1;
   StepControl control;
   std::vector<double> s(m);
@@ -212,14 +247,31 @@ void subgradient(const Instance& inst, LagrangianState& state, const Subgradient
     const double target_gap = std::max(state.cover_cost - value, 1e-3 * std::max(1.0, state.cover_cost));
     const double step = lambda * target_gap / norm;
     for (std::size_t i = 0; i < m; ++i) u[i] = std::max(0.0, u[i] + step * s[i]);
-    if (use_core && it % kPriceEvery == 0) price();
+    if (use_core && it % kPriceEvery == 0) price(false);
     if (options.run_heuristics && it % heuristic_every == 0) {
       ++state.heuristic_calls;
-      auto cover = greedy_cover(inst, u, use_core ? std::span<const char>(core_mask) : std::span<const char>{});
-      const double cost = inst.cost_of(cover);
-      if (cost < state.cover_cost) {
-        state.cover = std::move(cover);
-        state.cover_cost = cost;
+      if (it == options.max_iterations && options.threads != 1 &&
+          inst.num_entries() >= kParallelEntries) {
+        // Nothing after this iteration reads the cover until the caller is done with the
+        // multipliers: the greedy runs beside them, on copies of u and of the core.
+        auto job = std::make_unique<PendingHeuristic>();
+        PendingHeuristic& h = *job;
+        h.thread = std::jthread([&inst, &h, u_copy = u,
+                                 mask = use_core ? core_mask : std::vector<char>{}] {
+          try {
+            h.cover = greedy_cover(inst, u_copy, mask);
+          } catch (...) {
+            h.error = std::current_exception();
+          }
+        });
+        state.pending = std::move(job);
+      } else {
+        auto cover = greedy_cover(inst, u, use_core ? std::span<const char>(core_mask) : std::span<const char>{});
+        const double cost = inst.cost_of(cover);
+        if (cost < state.cover_cost) {
+          state.cover = std::move(cover);
+          state.cover_cost = cost;
+        }
       }
     }
     if (it % 100 == 0) {
@@ -229,7 +281,19 @@ void subgradient(const Instance& inst, LagrangianState& state, const Subgradient
     }
   }
   if (it > options.max_iterations) state.hit_iteration_limit = true;
-  if (use_core) price();
+  if (use_core) price(true);
+}
+
+void finish_heuristic(const Instance& inst, LagrangianState& state) {
+  if (!state.pending) return;
+  state.pending->thread.join();
+  const std::unique_ptr<PendingHeuristic> h = std::move(state.pending);
+  if (h->error) std::rethrow_exception(h->error);
+  const double cost = inst.cost_of(h->cover);
+  if (cost < state.cover_cost) {
+    state.cover = std::move(h->cover);
+    state.cover_cost = cost;
+  }
 }
 
 }  // namespace rstruct::setcover::detail

@@ -62,8 +62,10 @@ struct SolverOptions {
   /// one stream with seed 1 stays at 38, seeds 2-5 find the best-known 37; two streams
   /// with seed 1 reach all 30 unicost best-known values of families 4, 5, 6 and A.
   std::int32_t local_search_streams = 2;
-  /// Threads for the streams (0: hardware concurrency). With fewer threads than streams
-  /// the streams run one after another, each with its share of the time.
+  /// Threads (0: hardware concurrency): for the streams, and on large components for the
+  /// pricing passes and the greedy beside the first ascent (the result is the same for any
+  /// count). With fewer threads than streams the streams run one after another, each with
+  /// its share of the time.
   unsigned threads = 0;
 };
 
