@@ -491,14 +491,33 @@ void Builder::run_worker(const std::vector<VertexId>& list, std::size_t from, Ce
     last_ = start;
     star_is_latest_ = false;
   }
-  for (std::size_t i = from; i < list.size(); ++i) {
-    const VertexId p = list[i];
-    next_point_ = i + 1 < list.size() ? list[i + 1] : kInfiniteVertex;
+  // With locks, a point that another worker's locks kept out (mostly: its walk was
+  // blocked) is tried once more kRetryDelay points later, when that worker has usually
+  // moved on, and only then deferred to the sequential pass: 10^6 points on a torus, two
+  // workers, deferred 6.3 -> 4.4 % and 11.0 -> 10.5 s (medians of 6 interleaved pairs on
+  // a slow VM; 4 earlier pairs: 9.06 -> 8.58 s).
+  constexpr std::size_t kRetryDelay = 16;
+  retry_.clear();
+  std::size_t retry_head = 0;
+  const auto attempt = [&](VertexId p, bool may_retry, std::size_t i) {
     if (exhausted_ || !insert_owned(p)) {
       if (locking_) unlock_attempt();
-      deferred_.push_back(p);
+      if (may_retry && locking_ && !exhausted_) {
+        retry_.push_back({i, p});
+      } else {
+        deferred_.push_back(p);
+      }
+    }
+  };
+  for (std::size_t i = from; i < list.size(); ++i) {
+    next_point_ = i + 1 < list.size() ? list[i + 1] : kInfiniteVertex;
+    attempt(list[i], true, i);
+    while (retry_head < retry_.size() && retry_[retry_head].first + kRetryDelay <= i) {
+      attempt(retry_[retry_head++].second, false, i);
     }
   }
+  next_point_ = kInfiniteVertex;
+  while (retry_head < retry_.size()) attempt(retry_[retry_head++].second, false, 0);
   if (locking_) unlock_all();
 }
 

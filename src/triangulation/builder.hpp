@@ -253,6 +253,7 @@ class Builder {
   CellId region_next_ = 0;
   CellId region_end_ = 0;
   bool exhausted_ = false;                 // the region ran out during this pass
+  std::vector<std::pair<std::size_t, VertexId>> retry_;  // (list position, point) to retry
   bool parallel_futile_ = false;           // a pass deferred too much: sequential from now
   double growth_rate_ = 0;                 // live cells per point over the last stretch
   std::vector<VertexId> deferred_;
