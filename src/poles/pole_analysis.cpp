@@ -131,7 +131,7 @@ PoleAnalysis analyse_poles(std::span<const Point3> samples, const PoleAnalysisOp
     Report::Stage stage(r, "delaunay");
     triangulation::TriangulationOptions dt_options;
     dt_options.threads = options.threads;
-    dt_options.insert_last = box.size();  // the corners would be every worker's bottleneck
+    dt_options.insert_first = box.size();  // shared by the workers (see insert_first)
     const triangulation::RegularTriangulation3 dt(std::move(sites), dt_options);
     soup = soup_of(dt, samples.size(), options.threads);
     analysis.duplicate_samples = dt.duplicate_points().size();

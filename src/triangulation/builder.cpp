@@ -93,6 +93,7 @@ Builder::Builder(const Builder& main, std::uint8_t worker)
       free_count_(&own_free_count_),
       stats_(&own_stats_),
       worker_(worker) {
+  shared_end_ = main.shared_end_;
   vertex_local_.assign(t_.points_.size(), 0);
   if (weights_ != nullptr) vertex_mark_.assign(t_.points_.size(), 0);
 }
@@ -100,8 +101,9 @@ Builder::Builder(const Builder& main, std::uint8_t worker)
 void Builder::run() {
   const std::size_t n = t_.points_.size();
   Stopwatch clock;
-  // Input ids from first_last on are inserted after all the others (insert_last).
-  const std::size_t first_last = n - std::min(options_.insert_last, n);
+  // Input ids from first_shared on are inserted before all the others (insert_first).
+  const std::size_t shared = std::min(options_.insert_first, n);
+  const std::size_t first_shared = n - shared;
   // Points stored in insertion order make the construction's memory accesses local
   // (vertex ids are then ranks; input ids come back at the end). Not while a caller
   // observes the intermediate triangulations, which must speak in input ids.
@@ -113,7 +115,7 @@ void Builder::run() {
     t_.order_ = brio_order(t_.points_, options_.seed, 4, 256, workers_,
                            reorder_ && workers_ > 1 ? &input_keys : nullptr);
     std::stable_partition(t_.order_.begin(), t_.order_.end(),
-                          [&](VertexId v) { return v < first_last; });
+                          [&](VertexId v) { return v >= first_shared; });
   } else {
     t_.order_.resize(n);
     std::iota(t_.order_.begin(), t_.order_.end(), 0u);
@@ -155,6 +157,13 @@ void Builder::run() {
   t_.processed_ = 4;
   for (std::size_t k = 0; k < 4; ++k) after_insertion(vertex_at(k));
   if (reorder_ && workers_ > 1) {
+    // The shared points (insert_first) before the rounds; with the points in insertion
+    // order, ranks [0, shared_end_) are theirs (choose_first_tetrahedron keeps the order
+    // of the others; should it take a point from beyond them, a rank below shared_end_ is
+    // not one of them: still correct, see owned()).
+    shared_end_ = static_cast<VertexId>(shared);
+    const std::size_t rounds_begin = std::max<std::size_t>(shared, 4);
+    insert_sequentially(4, rounds_begin, n);
     // Rounds are the maximal stretches of non-decreasing Hilbert keys (a round may merge
     // with the next: still one stretch along the curve).
     keys_.resize(n);
@@ -164,12 +173,9 @@ void Builder::run() {
     owner_ = owner_store_.data();
     use_locks_ = options_.parallel_scheme == TriangulationOptions::ParallelScheme::locks;
     t_.stats_.threads = workers_;
-    // The points to insert last (TriangulationOptions::insert_last) stay out of the rounds.
-    std::size_t rounds_end = n;
-    while (rounds_end > 4 && t_.order_[rounds_end - 1] >= first_last) --rounds_end;
-    for (std::size_t k = 4; k < rounds_end;) {
+    for (std::size_t k = rounds_begin; k < n;) {
       std::size_t end = k + 1;
-      while (end < rounds_end && keys_[end] >= keys_[end - 1]) ++end;
+      while (end < n && keys_[end] >= keys_[end - 1]) ++end;
       const std::size_t live = t_.cells_.size() - t_.free_count_;
       if (!parallel_futile_ &&
           end - k >= std::max<std::size_t>(options_.parallel_min_round, 64 * workers_)) {
@@ -181,7 +187,6 @@ void Builder::run() {
                      static_cast<double>(end - k);
       k = end;
     }
-    insert_sequentially(std::max<std::size_t>(rounds_end, 4), n, n);
     helpers_.clear();
     keys_ = {};
     owner_store_ = {};
@@ -233,6 +238,18 @@ void Builder::insert_sequentially(std::size_t begin, std::size_t end, std::size_
 // finds no race in tests/triangulation/test_parallel_insertion). New cells come from the
 // worker's free list and then from a range of ids reserved for it.
 //
+// Shared vertices (TriangulationOptions::insert_first: the pole analysis's box corners)
+// are every worker's too, like the infinite vertex; then a cell can have more than one
+// vertex that no ownership keeps to one worker. The argument holds with "three of its own
+// vertices" read as "the unshared vertices of a facet, at least one": a worker never looks
+// across a facet of three shared vertices (facet_is_shared; the point is deferred) nor
+// starts in a cell of four. A cell's vertices are rewritten only by a worker holding all
+// its unshared vertices, anyone else reaches the cell across a facet with an unshared
+// vertex of its own, and a neighbour link is written only by the worker replacing the cell
+// on the other side, which holds that cell's unshared vertices: two workers never touch
+// the same field (TSan finds races when facet_is_shared is dropped: test "many shared
+// points").
+//
 // Passes with locks (points on a surface). Fixed borders defer too much there (3·10^5
 // points on a torus: 47 %), so once a pass defers a quarter of a round, that round's
 // deferred points and every later round go to passes where ownership is taken, not
@@ -246,7 +263,8 @@ void Builder::insert_sequentially(std::size_t begin, std::size_t end, std::size_
 // released only between two insertions, with release/acquire ordering. Between two
 // points a worker keeps only the locks of the cell where its next walk starts (see
 // keep_cell_locks). Double torus, 85,237 points and the pole analysis's box corners
-// (inserted last), two workers: 1-6 % deferred (fixed borders: 53 %). The cell ids then
+// (inserted first, shared), two workers: 0.3-0.5 % deferred (fixed borders: 53 %; box
+// corners inserted among the points and locked: 6-40 %). The cell ids then
 // depend on timing (the triangulation does not): TriangulationOptions::canonical_order
 // renumbers them.
 void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
@@ -377,8 +395,8 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
       hint = t_.walk(points_[lists[w][i]], hint, rng_, stats_->walk_steps,
                      stats_->orient_calls, &*box_filter_);
       const Cell& c = cells[hint];
-      bool own = true;
-      for (const VertexId v : c.v) own = own && (v == kInfiniteVertex || owner_[v] == w);
+      bool own = shared_count(c) < 4;
+      for (const VertexId v : c.v) own = own && (is_shared(v) || owner_[v] == w);
       if (own) {
         start[w] = hint;
         from[w] = i;
@@ -541,7 +559,7 @@ void Builder::choose_locked_start(const std::vector<VertexId>& list, std::size_t
   for (std::size_t i = 0; i < list.size() && i < 64; ++i) {
     hint = t_.walk(points_[list[i]], hint, rng_, stats_->walk_steps, stats_->orient_calls,
                    &*box_filter_);
-    bool all = true;
+    bool all = shared_count(t_.cells_[hint]) < 4;
     for (const VertexId v : t_.cells_[hint].v) all = all && owned(v);
     if (all) {
       keep_cell_locks(hint);
@@ -650,6 +668,10 @@ CellId Builder::walk_owned(const Point3& q, CellId start, bool& blocked) {
       ++stats_->orient_calls;
       if (t_.orient_replaced(c, inf, q, &*box_filter_) > 0) return c;
       follow_segment = false;
+      if (facet_is_shared(cells[c], inf)) {
+        blocked = true;
+        return c;
+      }
     } else {
       for (int i = 0; i < 4; ++i) __builtin_prefetch(&cells[cells[c].n[i] >> 2]);
       // Any facet q is strictly beyond is a valid move (the walk still terminates), so a
@@ -660,7 +682,7 @@ CellId Builder::walk_owned(const Point3& q, CellId start, bool& blocked) {
         ++stats_->orient_calls;
         if (t_.orient_replaced(c, i, q, &*box_filter_) >= 0) return;
         const std::uint32_t l = cells[c].n[i];
-        if (owned(cells[l >> 2].v[l & 3u])) {
+        if (!facet_is_shared(cells[c], i) && owned(cells[l >> 2].v[l & 3u])) {
           next = i;
         } else {
           beyond_foreign = true;
@@ -1155,6 +1177,10 @@ bool Builder::find_conflict_region_impl(CellId start, VertexId p) {
       const CellId y = k.n[i] >> 2;
       const unsigned m = mark(y);
       if (m == kNone) {
+        // A worker never looks across a facet of shared vertices (see facet_is_shared).
+        if constexpr (kOwned) {
+          if (facet_is_shared(k, i)) return false;
+        }
         untested[count++] = i;
         // y shares three vertices with x (whose test loaded them): only the one opposite
         // the shared facet is new.

@@ -64,13 +64,29 @@ class Builder {
   CellId walk_owned(const Point3& q, CellId start, bool& blocked);
   /// With locks: keeps only the locks of cell c, which becomes the start of the next walk.
   void keep_cell_locks(CellId c);
-  /// The infinite vertex counts as every worker's: two workers still never share three
-  /// vertices of a cell (see insert_round_in_parallel). In a pass with locks, a vertex
-  /// is the worker's once it holds its lock: owned() then tries to take it.
+  /// The shared vertices (the infinite one and TriangulationOptions::insert_first's) count
+  /// as every worker's; the passes keep out of cells where that would let two workers in
+  /// (see facet_is_shared and insert_round_in_parallel). In a pass with locks, a vertex is
+  /// the worker's once it holds its lock: owned() then tries to take it.
   bool owned(VertexId v) {
-    if (v == kInfiniteVertex) return true;
+    if (is_shared(v)) return true;
     if (!locking_) return owner_[v] == worker_;
     return lock(v);
+  }
+  /// The infinite vertex, or one of the points inserted first (ranks below shared_end_).
+  bool is_shared(VertexId v) const { return v < shared_end_ || v == kInfiniteVertex; }
+  /// Whether the facet of cell c opposite its vertex i has only shared vertices: no
+  /// worker may look across it in a parallel pass (nothing would keep another out of the
+  /// cell beyond).
+  bool facet_is_shared(const Cell& c, int i) const {
+    bool all = true;
+    for (int j = 0; j < 4; ++j) all = all && (j == i || is_shared(c.v[j]));
+    return all;
+  }
+  /// How many of cell c's vertices are shared.
+  int shared_count(const Cell& c) const {
+    return int{is_shared(c.v[0])} + int{is_shared(c.v[1])} + int{is_shared(c.v[2])} +
+           int{is_shared(c.v[3])};
   }
   /// Takes the lock of vertex v for this worker (or finds it held by this worker already);
   /// false if another worker holds it. Never waits.
@@ -243,6 +259,7 @@ class Builder {
   /// (free) / holder + 1 (a pass with locks; atomic accesses only).
   std::uint8_t* owner_ = nullptr;
   std::uint8_t worker_ = 0;
+  VertexId shared_end_ = 0;                // ranks [0, shared_end_) are shared (insert_first)
   bool locking_ = false;                   // this pass takes vertex locks
   bool use_locks_ = false;                 // main: rounds after a futile pass take locks
   bool took_locks_ = false;                // main: a pass took locks (cell ids by timing)

@@ -127,12 +127,15 @@ struct TriangulationOptions {
   /// without spatial_sort.
   unsigned threads = 1;
   std::size_t parallel_min_round = 10000;
-  /// The last `insert_last` input points are inserted after all the others (with
-  /// spatial_sort; one by one). For far sites that every outer cell would share, such as
-  /// the pole analysis's bounding-box corners: inserted among the others, they are
-  /// vertices of the cells around every point on the sample's hull, and parallel workers
-  /// with locks then wait on them (double torus: 3 % to 35 % deferred, 1 % without).
-  std::size_t insert_last = 0;
+  /// The last `insert_first` input points are inserted before all the others (with
+  /// spatial_sort; one by one), and parallel workers share them as they share the infinite
+  /// vertex: no worker locks or owns them. For far sites enclosing the others, such as the
+  /// pole analysis's bounding-box corners: inserted last, each of them conflicts with the
+  /// hundreds of thousands of flat cells along the hull of a large sample (10^6 points on
+  /// a torus: 1.7 s for the 8 corners); inserted among the others and locked, they are
+  /// vertices of the cells around every point on the hull, and workers with locks keep
+  /// deferring each other's points there (double torus: 6 % to 40 % deferred).
+  std::size_t insert_first = 0;
   /// How the parallel passes share the work (with threads > 1): `automatic` starts with
   /// fixed borders and turns to locks after a pass that defers a quarter of a large round;
   /// `borders` and `locks` keep to one (tests and benchmarks compare them).
