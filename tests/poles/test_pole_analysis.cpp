@@ -101,6 +101,10 @@ TEST_CASE("sphere sample: clean labels, inner poles near the centre, D̂ ≈ 1")
     CHECK(report.data()["poles"]["unlabelled"] == 0);
     CHECK(report.stages().size() == 3);  // delaunay, poles, labels + pole distance
     for (std::uint32_t p = 0; p < a.poles.size(); ++p) {
+      // The tetrahedra come to compute_poles with their vertices sorted (the circumcentre
+      // does not depend on the triangulation's vertex order in a cell).
+      const auto& q = a.poles.sites[p];
+      CHECK((q[0] < q[1] && q[1] < q[2] && q[2] < q[3]));
       const double d = rstruct::distance(a.poles.centre[p], centre);
       if (a.poles.label[p] == PoleLabel::inner) {
         CHECK(d < 0.1);
