@@ -187,31 +187,88 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
                    });
 
   // Distinct poles, numbered in the order of their owners (the smallest sample having
-  // them as a pole), p⁺ before p⁻: not in the order of the soup.
-  std::vector<std::uint32_t> pole_of_tet(soup.tets.size(), kNoPole);
+  // them as a pole), p⁺ before p⁻: not in the order of the soup. A sample owns its choice
+  // t unless a smaller vertex of t chose t too, so each block of samples finds its new
+  // poles on its own, then writes them from its offset; the others then take their
+  // owner's number. (A table of every tetrahedron's pole, filled in one pass over the
+  // samples, took 0.5 s for 10^6 torus samples: 20.6M tetrahedra.)
+  const auto owned_by = [&](std::uint32_t t, std::uint32_t s, std::uint32_t& owner,
+                            int& slot) {
+    owner = s;
+    slot = -1;
+    for (const std::uint32_t u : soup.tets[t]) {
+      if (u >= owner) continue;
+      if (choice.first[u] == t) {
+        owner = u;
+        slot = 0;
+      } else if (choice.second[u] == t) {
+        owner = u;
+        slot = 1;
+      }
+    }
+    return owner == s;
+  };
+  std::vector<std::array<std::uint32_t, 2>> pole_ids(n, {kNoPole, kNoPole});
+  std::vector<std::size_t> block_offset(ranges + 1, 0);
+  const auto block_begin = [&](unsigned k) { return static_cast<std::uint32_t>(n * k / ranges); };
+  detail::run_blocks(ranges, [&](unsigned k) {
+    std::size_t count = 0;
+    std::uint32_t owner = 0;
+    int slot = 0;
+    for (std::uint32_t s = block_begin(k); s < block_begin(k + 1); ++s) {
+      for (const std::uint32_t t : {choice.first[s], choice.second[s]}) {
+        if (t != kNoTet && owned_by(t, s, owner, slot)) ++count;
+      }
+    }
+    block_offset[k + 1] = count;
+  });
+  for (unsigned k = 0; k < ranges; ++k) block_offset[k + 1] += block_offset[k];
+  const std::size_t pole_count = block_offset[ranges];
   PoleSet poles;
   poles.sample_count = n;
-  for (std::uint32_t s = 0; s < n; ++s) {
-    for (const std::uint32_t t : {choice.first[s], choice.second[s]}) {
-      if (t == kNoTet || pole_of_tet[t] != kNoPole) continue;
-      pole_of_tet[t] = static_cast<std::uint32_t>(poles.size());
-      const detail::Circumsphere& cs = choice.spheres[t];
-      poles.centre.push_back(soup.vertices[soup.tets[t][0]] + cs.offset);
-      poles.radius.push_back(std::sqrt(cs.squared_radius));
-      poles.tet.push_back(t);
-      poles.sites.push_back(soup.tets[t]);
-      poles.owner.push_back(s);
+  poles.centre.resize(pole_count);
+  poles.radius.resize(pole_count);
+  poles.tet.resize(pole_count);
+  poles.sites.resize(pole_count);
+  poles.owner.resize(pole_count);
+  detail::run_blocks(ranges, [&](unsigned k) {
+    std::size_t next = block_offset[k];
+    std::uint32_t owner = 0;
+    int slot = 0;
+    for (std::uint32_t s = block_begin(k); s < block_begin(k + 1); ++s) {
+      for (int which = 0; which < 2; ++which) {
+        const std::uint32_t t = which == 0 ? choice.first[s] : choice.second[s];
+        if (t == kNoTet || !owned_by(t, s, owner, slot)) continue;
+        const detail::Circumsphere& cs = choice.spheres[t];
+        poles.centre[next] = soup.vertices[soup.tets[t][0]] + cs.offset;
+        poles.radius[next] = std::sqrt(cs.squared_radius);
+        poles.tet[next] = t;
+        poles.sites[next] = soup.tets[t];
+        poles.owner[next] = s;
+        pole_ids[s][static_cast<std::size_t>(which)] = static_cast<std::uint32_t>(next++);
+      }
     }
-  }
+  });
+  // Every owner's numbers are written: the choices owned by another sample take them.
+  detail::run_blocks(ranges, [&](unsigned k) {
+    std::uint32_t owner = 0;
+    int slot = 0;
+    for (std::uint32_t s = block_begin(k); s < block_begin(k + 1); ++s) {
+      for (int which = 0; which < 2; ++which) {
+        const std::uint32_t t = which == 0 ? choice.first[s] : choice.second[s];
+        if (t == kNoTet || owned_by(t, s, owner, slot)) continue;
+        pole_ids[s][static_cast<std::size_t>(which)] =
+            pole_ids[owner][static_cast<std::size_t>(slot)];
+      }
+    }
+  });
   poles.label.assign(poles.size(), PoleLabel::unlabelled);
   poles.sample_poles.resize(n);
   poles.representative.resize(n);
   for (std::uint32_t s = 0; s < n; ++s) {
     const std::uint32_t r = soup.representative.empty() ? s : soup.representative[s];
-    const std::uint32_t a = choice.first[r], b = choice.second[r];
     poles.representative[s] = r;
-    poles.sample_poles[s] = {a == kNoTet ? kNoPole : pole_of_tet[a],
-                             b == kNoTet ? kNoPole : pole_of_tet[b]};
+    poles.sample_poles[s] = pole_ids[r];
   }
   return poles;
 }
@@ -227,6 +284,10 @@ bool PoleSet::is_valid() const {
     if (!is_finite(centre[p]) || !std::isfinite(radius[p]) || !(radius[p] > 0)) return false;
     if (owner[p] >= sample_count) return false;
   }
+  // One entry per pole: no tetrahedron twice.
+  std::vector<std::uint32_t> tets(tet);
+  std::sort(tets.begin(), tets.end());
+  if (std::adjacent_find(tets.begin(), tets.end()) != tets.end()) return false;
   for (std::uint32_t s = 0; s < sample_count; ++s) {
     const auto [a, b] = sample_poles[s];
     const std::uint32_t r = representative[s];

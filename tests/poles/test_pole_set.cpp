@@ -172,6 +172,33 @@ TEST_CASE("the poles do not depend on the threads choosing them") {
   }
 }
 
+TEST_CASE("a tetrahedron that is one sample's p⁺ and a smaller sample's p⁻ is one pole") {
+  // Random tetrahedra: poles chosen by several samples in different roles happen.
+  std::size_t crossed = 0;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    std::mt19937_64 rng(seed);
+    std::vector<Point3> vertices;
+    const std::vector<Tet> tets = random_tetrahedra(rng, vertices, seed % 2 == 0);
+    const TetrahedronSoup soup{vertices, 300, tets, {}};
+    for (const unsigned threads : {1u, 2u}) {
+      const PoleSet poles = compute_poles(soup, threads, 1);
+      REQUIRE(poles.is_valid());  // among others: no tetrahedron twice
+      // Every pole is the choice of its owner, in the same role or the other.
+      std::vector<int> first_of(poles.size(), 0), second_of(poles.size(), 0);
+      for (std::uint32_t s = 0; s < 300; ++s) {
+        const auto [a, b] = poles.sample_poles[s];
+        if (a != kNoPole) ++first_of[a];
+        if (b != kNoPole) ++second_of[b];
+      }
+      for (std::size_t p = 0; p < poles.size(); ++p) {
+        CHECK(first_of[p] + second_of[p] > 0);
+        if (first_of[p] > 0 && second_of[p] > 0) ++crossed;
+      }
+    }
+  }
+  CHECK(crossed > 0);
+}
+
 TEST_CASE("the poles do not depend on the order of the soup; ties go to the smallest ids") {
   // A parallel Delaunay triangulation numbers its cells by timing: the same tetrahedra in
   // another order must give the same poles, with the same numbers.

@@ -78,9 +78,9 @@ struct PoleSet {
     }
     return kNoPole;
   }
-  /// Sizes agree, indices in range, radii finite and positive, every sample's poles are
-  /// tetrahedra incident to it, owners are the smallest such samples, p⁻ ≠ p⁺ and p⁻ is not
-  /// larger than p⁺.
+  /// Sizes agree, no tetrahedron is two poles, indices in range, radii finite and
+  /// positive, every sample's poles are tetrahedra incident to it, owners are the smallest
+  /// such samples, p⁻ ≠ p⁺ and p⁻ is not larger than p⁺.
   bool is_valid() const;
 };
 
