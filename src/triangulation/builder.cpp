@@ -114,8 +114,10 @@ void Builder::run() {
   if (options_.spatial_sort) {
     t_.order_ = brio_order(t_.points_, options_.seed, 4, 256, workers_,
                            reorder_ && workers_ > 1 ? &input_keys : nullptr);
-    std::stable_partition(t_.order_.begin(), t_.order_.end(),
-                          [&](VertexId v) { return v >= first_shared; });
+    if (shared > 0) {
+      std::stable_partition(t_.order_.begin(), t_.order_.end(),
+                            [&](VertexId v) { return v >= first_shared; });
+    }
   } else {
     t_.order_.resize(n);
     std::iota(t_.order_.begin(), t_.order_.end(), 0u);
