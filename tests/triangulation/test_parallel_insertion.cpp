@@ -190,6 +190,24 @@ TEST_CASE("parallel insertion: exact duplicates") {
   check_same(in, 2, 2000, true);
 }
 
+/// `in` triangulated with its last `shared` points inserted first and shared by the
+/// workers, on `threads` threads by `scheme`: valid, and the same cells as `one`.
+RegularTriangulation3 build_sharing(const Input& in, std::size_t shared, unsigned threads,
+                                    Scheme scheme, const RegularTriangulation3& one) {
+  TriangulationOptions options;
+  options.threads = threads;
+  options.parallel_min_round = 2000;
+  options.parallel_scheme = scheme;
+  options.insert_first = shared;
+  RegularTriangulation3 t = rstruct::test::build(in, options);
+  const auto report = t.is_valid();
+  INFO(report.message << " (" << threads << " threads, scheme " << static_cast<int>(scheme)
+                      << ")");
+  REQUIRE(report.ok);
+  CHECK(cell_set(t) == cell_set(one));
+  return t;
+}
+
 TEST_CASE("points inserted first (bounding-box corners), shared by the workers") {
   Input in{torus_points(20000, 19), {}};
   for (int k = 0; k < 8; ++k) {
@@ -199,17 +217,7 @@ TEST_CASE("points inserted first (bounding-box corners), shared by the workers")
   const RegularTriangulation3 one = build(in, 1, 2000);
   for (const Scheme scheme : {Scheme::automatic, Scheme::borders, Scheme::locks}) {
     for (const unsigned threads : {1u, 2u, 3u}) {
-      TriangulationOptions options;
-      options.threads = threads;
-      options.parallel_min_round = 2000;
-      options.parallel_scheme = scheme;
-      options.insert_first = 8;
-      const RegularTriangulation3 first = rstruct::test::build(in, options);
-      const auto report = first.is_valid();
-      INFO(report.message << " (" << threads << " threads, scheme "
-                          << static_cast<int>(scheme) << ")");
-      REQUIRE(report.ok);
-      CHECK(cell_set(first) == cell_set(one));
+      const RegularTriangulation3 first = build_sharing(in, 8, threads, scheme, one);
       if (threads > 1) {
         CHECK(first.stats().parallel_points > in.points.size() / 2);
         // Every cell outside the torus has a corner. With fixed borders (no timing),
@@ -244,18 +252,8 @@ TEST_CASE("many shared points: the workers keep out of the cells they would shar
   const RegularTriangulation3 one = build(in, 1, 2000);
   for (const Scheme scheme : {Scheme::borders, Scheme::locks}) {
     for (const unsigned threads : {2u, 3u}) {
-      TriangulationOptions options;
-      options.threads = threads;
-      options.parallel_min_round = 2000;
-      options.parallel_scheme = scheme;
-      options.insert_first = 15000;
-      const RegularTriangulation3 t = rstruct::test::build(in, options);
-      const auto report = t.is_valid();
-      INFO(report.message << " (" << threads << " threads, scheme "
-                          << static_cast<int>(scheme) << ")");
-      REQUIRE(report.ok);
-      CHECK(cell_set(t) == cell_set(one));
-      CHECK(t.stats().parallel_points > (in.points.size() - options.insert_first) / 2);
+      const RegularTriangulation3 t = build_sharing(in, 15000, threads, scheme, one);
+      CHECK(t.stats().parallel_points > (in.points.size() - 15000) / 2);
     }
   }
 }
