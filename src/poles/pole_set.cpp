@@ -209,15 +209,22 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
     return owner == s;
   };
   std::vector<std::array<std::uint32_t, 2>> pole_ids(n, {kNoPole, kNoPole});
+  std::vector<std::uint8_t> owns(n, 0);  // bit w: the sample owns its choice w (p⁺, p⁻)
   std::vector<std::size_t> block_offset(ranges + 1, 0);
   const auto block_begin = [&](unsigned k) { return static_cast<std::uint32_t>(n * k / ranges); };
+  const auto chosen = [&](std::uint32_t s, int which) {
+    return which == 0 ? choice.first[s] : choice.second[s];
+  };
   detail::run_blocks(ranges, [&](unsigned k) {
     std::size_t count = 0;
     std::uint32_t owner = 0;
     int slot = 0;
     for (std::uint32_t s = block_begin(k); s < block_begin(k + 1); ++s) {
-      for (const std::uint32_t t : {choice.first[s], choice.second[s]}) {
-        if (t != kNoTet && owned_by(t, s, owner, slot)) ++count;
+      for (int which = 0; which < 2; ++which) {
+        const std::uint32_t t = chosen(s, which);
+        if (t == kNoTet || !owned_by(t, s, owner, slot)) continue;
+        owns[s] = static_cast<std::uint8_t>(owns[s] | (1u << which));
+        ++count;
       }
     }
     block_offset[k + 1] = count;
@@ -233,12 +240,10 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
   poles.owner.resize(pole_count);
   detail::run_blocks(ranges, [&](unsigned k) {
     std::size_t next = block_offset[k];
-    std::uint32_t owner = 0;
-    int slot = 0;
     for (std::uint32_t s = block_begin(k); s < block_begin(k + 1); ++s) {
       for (int which = 0; which < 2; ++which) {
-        const std::uint32_t t = which == 0 ? choice.first[s] : choice.second[s];
-        if (t == kNoTet || !owned_by(t, s, owner, slot)) continue;
+        if ((owns[s] >> which & 1u) == 0) continue;
+        const std::uint32_t t = chosen(s, which);
         const detail::Circumsphere& cs = choice.spheres[t];
         poles.centre[next] = soup.vertices[soup.tets[t][0]] + cs.offset;
         poles.radius[next] = std::sqrt(cs.squared_radius);
@@ -255,8 +260,9 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
     int slot = 0;
     for (std::uint32_t s = block_begin(k); s < block_begin(k + 1); ++s) {
       for (int which = 0; which < 2; ++which) {
-        const std::uint32_t t = which == 0 ? choice.first[s] : choice.second[s];
-        if (t == kNoTet || owned_by(t, s, owner, slot)) continue;
+        const std::uint32_t t = chosen(s, which);
+        if (t == kNoTet || (owns[s] >> which & 1u) != 0) continue;
+        owned_by(t, s, owner, slot);
         pole_ids[s][static_cast<std::size_t>(which)] =
             pole_ids[owner][static_cast<std::size_t>(slot)];
       }
