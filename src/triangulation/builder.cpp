@@ -397,7 +397,7 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
       hint = t_.walk(points_[lists[w][i]], hint, rng_, stats_->walk_steps,
                      stats_->orient_calls, &*box_filter_);
       const Cell& c = cells[hint];
-      bool own = shared_count(c) < 4;
+      bool own = !cell_is_shared(c);
       for (const VertexId v : c.v) own = own && (is_shared(v) || owner_[v] == w);
       if (own) {
         start[w] = hint;
@@ -561,7 +561,7 @@ void Builder::choose_locked_start(const std::vector<VertexId>& list, std::size_t
   for (std::size_t i = 0; i < list.size() && i < 64; ++i) {
     hint = t_.walk(points_[list[i]], hint, rng_, stats_->walk_steps, stats_->orient_calls,
                    &*box_filter_);
-    bool all = shared_count(t_.cells_[hint]) < 4;
+    bool all = !cell_is_shared(t_.cells_[hint]);
     for (const VertexId v : t_.cells_[hint].v) all = all && owned(v);
     if (all) {
       keep_cell_locks(hint);

@@ -83,10 +83,9 @@ class Builder {
     for (int j = 0; j < 4; ++j) all = all && (j == i || is_shared(c.v[j]));
     return all;
   }
-  /// How many of cell c's vertices are shared.
-  int shared_count(const Cell& c) const {
-    return int{is_shared(c.v[0])} + int{is_shared(c.v[1])} + int{is_shared(c.v[2])} +
-           int{is_shared(c.v[3])};
+  /// Whether all four vertices of cell c are shared: no worker can hold it alone.
+  bool cell_is_shared(const Cell& c) const {
+    return is_shared(c.v[0]) && facet_is_shared(c, 0);
   }
   /// Takes the lock of vertex v for this worker (or finds it held by this worker already);
   /// false if another worker holds it. Never waits.
