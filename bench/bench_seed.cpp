@@ -30,6 +30,7 @@
 #include "rstruct/core/report.hpp"
 #include "rstruct/core/stopwatch.hpp"
 #include "rstruct/pipeline/seed_polytope.hpp"
+#include "rstruct/predicates/counters.hpp"
 #include "rstruct/poles/pole_analysis.hpp"
 #include "rstruct/sampling/sample_request.hpp"
 #include "rstruct/triangulation/spatial_sort.hpp"
@@ -118,6 +119,22 @@ struct StageTimes {
                 median(total_cpu));
   }
 };
+
+/// In a build with -Dcounters=true: how often each stage decided orient3d and `id` since
+/// the counts were reset.
+void print_stage_counts(int run, const std::string& stage, rstruct::predicates::PredicateId id) {
+  namespace pr = rstruct::predicates;
+  if (!pr::counters_enabled()) return;
+  for (const auto which : {pr::PredicateId::orient3d, id}) {
+    const pr::StageCounts c = pr::stage_counts(which);
+    std::fprintf(stderr, "run %d %s: %s %llu filter, %llu dynamic, %llu exact, %llu perturbed\n",
+                 run + 1, stage.c_str(), pr::predicate_name(which),
+                 static_cast<unsigned long long>(c.filter),
+                 static_cast<unsigned long long>(c.dynamic),
+                 static_cast<unsigned long long>(c.exact),
+                 static_cast<unsigned long long>(c.perturbed));
+  }
+}
 
 }  // namespace
 
@@ -214,9 +231,11 @@ int main(int argc, char** argv) {
     Report pole_report;
     rstruct::poles::PoleAnalysisOptions pole_options;
     pole_options.threads = threads;
+    rstruct::predicates::reset_stage_counts();
     const rstruct::poles::PoleAnalysis analysis =
         rstruct::poles::analyse_poles(samples, pole_options, &pole_report);
     poles.add(pole_report);
+    print_stage_counts(run, "shared", rstruct::predicates::PredicateId::insphere);
     std::vector<std::uint32_t> previous_kept;
     double previous_shrink = -1;
     for (std::size_t l = 0; l < levels.size(); ++l) {
@@ -232,6 +251,7 @@ int main(int argc, char** argv) {
       }
       Report report;
       rstruct::complex::reset_orthosphere_predicate_counters();
+      rstruct::predicates::reset_stage_counts();
       const auto seed =
           rstruct::pipeline::compute_seed_polytope(samples, analysis, options, &report);
       level_times[l].add(report);
@@ -254,6 +274,8 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "run %d level %zu: orthosphere predicates %llu filtered, %llu exact\n",
                    run + 1, l + 1, static_cast<unsigned long long>(counters.filtered),
                    static_cast<unsigned long long>(counters.exact));
+      print_stage_counts(run, "level " + std::to_string(l + 1),
+                         rstruct::predicates::PredicateId::power_test);
       std::fprintf(stderr, "run %d level %zu: %.3f s cpu; %s\n", run + 1, l + 1,
                    level_times[l].total_cpu.back(), line);
       if (seed.pruned) {

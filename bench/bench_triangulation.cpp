@@ -12,8 +12,9 @@
 // Columns: case, points, vertices, finite cells, hidden+merged, sort s, insertion s,
 // total wall and CPU s, bytes per point (peak RSS minus RSS before the points were generated, so the
 // input points, which the triangulation owns, are included), walk steps and conflict
-// cells per point, and the share of predicate calls the filter could not decide (only in a
-// build with -Dcounters=true), and the share of points the parallel passes deferred to
+// cells per point, and the share of predicate calls that reached the exact stage (neither
+// the filter nor, for the in-sphere and power tests, the dynamic filter could decide; only
+// in a build with -Dcounters=true), and the share of points the parallel passes deferred to
 // the sequential one.
 #include <sys/resource.h>
 #include <sys/wait.h>

@@ -29,6 +29,7 @@
 // expression for K·S and the guard applied to W, so they need no constant of their own.
 #include <boost/multiprecision/mpfi.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -155,6 +156,84 @@ Tracked ball_side_error() {
   return pd::ball_side_value(t, t, t, exact_leaf(1));
 }
 
+// Dynamic filters (include/rstruct/predicates/detail/dynamic_filter.hpp): |D̃ − D| ≤ K·P̃
+// with P̃ the computed permanent of the same tree. Two mechanical passes over the same
+// templates:
+//  1. Roundings: the largest number n of roundings that any term of the expanded tree
+//     carries, leaves' differences included (a leaf t̃ = fl(p − q) = t(1 + δ): 1; a sum
+//     or difference: max(n_a, n_b) + 1; a product: n_a + n_b + 1). In the absence of
+//     underflow the computed value is the sum of the terms, each times a product of at most
+//     n factors (1 + δ): |D̃ − D| ≤ γ_n·P, and the permanent, evaluated on |t̃| by the same
+//     tree, P̃ = Σ|term|·(1 + θ) ≥ (1 − γ_n)·P.
+//  2. Underflow: a product that underflows adds η, |η| ≤ 2⁻¹⁰⁷⁵ (sums are then exact),
+//     which later operations scale. Under the guard (|t̃| ≤ 2^100, |w̃| ≤ 2^200) each node
+//     carries a bound M on its computed magnitude and E on the part of its value that
+//     comes from some η: for ±, M = (M_a + M_b)(1 + u), E = (E_a + E_b)(1 + u); for ×,
+//     M = M_a·M_b·(1 + u) + η, E = ((M_a + E_a)·E_b + E_a·(M_b + E_b) + E_a·E_b)(1 + u) + η.
+//     The same E bounds the permanent's share, as the permanent runs the same tree on
+//     magnitudes with the same bounds.
+// The filter decides when |D̃| > B = fl(K·P̃) and B ≥ 2^-700, so K·P̃ ≥ 2^-700/(1 + u), and
+// B ≥ K·P̃·(1 − u). It is right if B ≥ γ_n·P + E, which holds when
+//   (K(1 − u) − γ_n/(1 − γ_n))·P̃ ≥ γ_n·E/(1 − γ_n) + E   for P̃ = 2^-700/(K(1 + u)),
+// the left side growing with P̃. The root's M must also stay finite (no overflow).
+struct Roundings {
+  int n = 0;
+};
+Roundings operator+(const Roundings& a, const Roundings& b) { return {std::max(a.n, b.n) + 1}; }
+Roundings operator-(const Roundings& a, const Roundings& b) { return a + b; }
+Roundings operator*(const Roundings& a, const Roundings& b) { return {a.n + b.n + 1}; }
+
+struct Underflow {
+  Interval m;
+  Interval e;
+};
+Underflow operator+(const Underflow& a, const Underflow& b) {
+  const Interval grow = 1 + unit_roundoff();
+  return {(a.m + b.m) * grow, (a.e + b.e) * grow};
+}
+Underflow operator-(const Underflow& a, const Underflow& b) { return a + b; }
+Underflow operator*(const Underflow& a, const Underflow& b) {
+  const Interval grow = 1 + unit_roundoff();
+  return {a.m * b.m * grow + underflow_error(),
+          ((a.m + a.e) * b.e + a.e * (b.m + b.e) + a.e * b.e) * grow + underflow_error()};
+}
+
+template <class T>
+T lifted4_tree(const T& t, const T& w) {
+  const T l = pd::lifted_height(t, t, t, w);
+  return pd::lifted_det4_negated(pd::LiftedRows<T>{t, t, t, l, t, t, t, l, t, t, t, l, t, t, t, l});
+}
+
+bool check_dynamic(const char* name, double coded, bool weighted) {
+  const fc::DynamicGuard& g = fc::kGuardDynamic;
+  // Unweighted, the height subtracts the weight difference 0 all the same: counted as a
+  // rounding (it is exact, so this only overestimates).
+  const int n = lifted4_tree(Roundings{1}, Roundings{weighted ? 1 : 0}).n;
+  const Underflow leaf{Interval(g.max_difference), Interval(0)};
+  const Underflow weight{Interval(weighted ? g.max_weight_difference : 0.0), Interval(0)};
+  const Underflow root = lifted4_tree(leaf, weight);
+  const Interval u = unit_roundoff();
+  const Interval gamma = n * u / (1 - n * u);
+  const Interval k(coded);
+  const Interval slope = k * (1 - u) - gamma / (1 - gamma);
+  const Interval smallest_permanent = Interval(g.min_bound) / (k * (1 + u));
+  const Interval left = slope * smallest_permanent;
+  const Interval right = gamma * root.e / (1 - gamma) + root.e;
+  const bool no_overflow = upper(root.m) < 0x1p1000;
+  const bool holds = lower(slope) > 0 && lower(left) > upper(right) && no_overflow;
+  std::printf("%-28s claim: K(1-u) - g_n/(1-g_n) > 0 with n = %d roundings per term, and the\n",
+              name, n);
+  std::printf("%-28s slack at the guard's smallest permanent exceeds the underflow share\n", "");
+  std::printf("%-28s K = %.17g = %.4f u, needed %.4f u; slack [%.6g, %.6g] vs underflow <= %.6g;"
+              " |D| <= %.3g  %s\n",
+              "", coded, static_cast<double>(lower(Interval(k / u))),
+              static_cast<double>(upper(Interval(gamma / (1 - gamma) / (1 - u) / u))),
+              static_cast<double>(lower(left)), static_cast<double>(upper(left)),
+              static_cast<double>(upper(right)), static_cast<double>(upper(root.m)),
+              holds ? "HOLDS" : "FAILS");
+  return holds;
+}
+
 }  // namespace
 
 int main() {
@@ -176,6 +255,8 @@ int main() {
   };
   int failed = 0;
   for (const Claim& c : claims) failed += check(c) ? 0 : 1;
-  std::printf("%zu claims, %d failed\n", claims.size(), failed);
+  failed += check_dynamic("insphere (dynamic)", fc::kInsphereDynamic, false) ? 0 : 1;
+  failed += check_dynamic("power_test (dynamic)", fc::kPowerTestDynamic, true) ? 0 : 1;
+  std::printf("%zu claims, %d failed\n", claims.size() + 2, failed);
   return failed == 0 ? 0 : 1;
 }

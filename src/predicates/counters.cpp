@@ -16,8 +16,9 @@ StageCounts stage_counts(PredicateId id) {
   const auto& row = detail::counter_table()[static_cast<std::size_t>(id)];
   StageCounts c;
   c.filter = row[0].load(std::memory_order_relaxed);
-  c.exact = row[1].load(std::memory_order_relaxed);
-  c.perturbed = row[2].load(std::memory_order_relaxed);
+  c.dynamic = row[1].load(std::memory_order_relaxed);
+  c.exact = row[2].load(std::memory_order_relaxed);
+  c.perturbed = row[3].load(std::memory_order_relaxed);
   return c;
 }
 

@@ -3,6 +3,7 @@
 
 #include "rstruct/predicates/detail/counting.hpp"
 #include "predicates/exact_stage.hpp"
+#include "rstruct/predicates/detail/dynamic_filter.hpp"
 #include "rstruct/predicates/detail/filters.hpp"
 #include "predicates/perturbation.hpp"
 #include "rstruct/core/error.hpp"
@@ -33,11 +34,32 @@ Sign perturbed_lifted4(const std::array<const Point3*, 5>& p,
 }  // namespace
 
 // The filter stage of each predicate is inline in predicates.hpp; these are the stages
-// after it, out of line.
+// after it, out of line: the dynamic filter (dynamic_filter.hpp), then the exact stage,
+// then the perturbation.
 namespace detail {
+namespace {
+
+/// The dynamic filter's sign of the in-sphere test, or kUndecided.
+int insphere_dynamic(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                     const Point3& e) {
+  const int f = lifted4_dynamic_filter<false>(a, b, c, d, e, 0, 0, 0, 0, 0);
+  if (f != kUndecided) RSTRUCT_PREDICATE_COUNT(insphere, dynamic);
+  return f;
+}
+
+/// The dynamic filter's sign of the power test, or kUndecided.
+int power_test_dynamic(const WeightedPoint& a, const WeightedPoint& b, const WeightedPoint& c,
+                       const WeightedPoint& d, const WeightedPoint& e) {
+  const int f = lifted4_dynamic_filter<true>(a.c, b.c, c.c, d.c, e.c, a.w, b.w, c.w, d.w, e.w);
+  if (f != kUndecided) RSTRUCT_PREDICATE_COUNT(power_test, dynamic);
+  return f;
+}
+
+}  // namespace
 
 Sign insphere_after_filter(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                            const Point3& e) {
+  if (const int f = insphere_dynamic(a, b, c, d, e); f != kUndecided) return static_cast<Sign>(f);
   RSTRUCT_PREDICATE_COUNT(insphere, exact);
   return static_cast<Sign>(lifted4_exact({a, 0}, {b, 0}, {c, 0}, {d, 0}, {e, 0}));
 }
@@ -45,6 +67,9 @@ Sign insphere_after_filter(const Point3& a, const Point3& b, const Point3& c, co
 Sign power_test_after_filter(const WeightedPoint& a, const WeightedPoint& b,
                              const WeightedPoint& c, const WeightedPoint& d,
                              const WeightedPoint& e) {
+  if (const int f = power_test_dynamic(a, b, c, d, e); f != kUndecided) {
+    return static_cast<Sign>(f);
+  }
   RSTRUCT_PREDICATE_COUNT(power_test, exact);
   return static_cast<Sign>(lifted4_exact(a, b, c, d, e));
 }
@@ -53,6 +78,7 @@ Sign insphere_sos_after_filter(const Point3& a, const Point3& b, const Point3& c
                                const Point3& d, const Point3& e, std::uint32_t ia,
                                std::uint32_t ib, std::uint32_t ic, std::uint32_t id,
                                std::uint32_t ie) {
+  if (const int f = insphere_dynamic(a, b, c, d, e); f != kUndecided) return static_cast<Sign>(f);
   const int s = lifted4_exact({a, 0}, {b, 0}, {c, 0}, {d, 0}, {e, 0});
   if (s != 0) {
     RSTRUCT_PREDICATE_COUNT(insphere, exact);
@@ -66,6 +92,9 @@ Sign power_test_sos_after_filter(const WeightedPoint& a, const WeightedPoint& b,
                                  const WeightedPoint& c, const WeightedPoint& d,
                                  const WeightedPoint& e, std::uint32_t ia, std::uint32_t ib,
                                  std::uint32_t ic, std::uint32_t id, std::uint32_t ie) {
+  if (const int f = power_test_dynamic(a, b, c, d, e); f != kUndecided) {
+    return static_cast<Sign>(f);
+  }
   const int s = lifted4_exact(a, b, c, d, e);
   if (s != 0) {
     RSTRUCT_PREDICATE_COUNT(power_test, exact);

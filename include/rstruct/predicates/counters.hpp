@@ -1,9 +1,10 @@
 #pragma once
 /// \file
-/// How often each stage of each predicate decides (filter, exact, perturbation), for
-/// benchmarks and for the triangulation's statistics. Compiled in only when the meson
-/// option `counters` is on (macro RSTRUCT_COUNTERS); otherwise every count stays zero and
-/// counting costs nothing. Counts are global, relaxed atomics (safe across threads).
+/// How often each stage of each predicate decides (filter, dynamic filter, exact,
+/// perturbation), for benchmarks and for the triangulation's statistics. Compiled in only
+/// when the meson option `counters` is on (macro RSTRUCT_COUNTERS); otherwise every count
+/// stays zero and counting costs nothing. Counts are global, relaxed atomics (safe across
+/// threads).
 
 #include <cstddef>
 #include <cstdint>
@@ -29,9 +30,10 @@ enum class PredicateId : unsigned char {
 /// evaluation that returned zero before it only under `perturbed`.
 struct StageCounts {
   std::uint64_t filter = 0;     ///< decided by the floating-point filter
+  std::uint64_t dynamic = 0;    ///< decided by the dynamic filter (in-sphere and power tests)
   std::uint64_t exact = 0;      ///< decided by the exact stage (including exact zeros)
   std::uint64_t perturbed = 0;  ///< decided by the symbolic perturbation
-  std::uint64_t total() const { return filter + exact + perturbed; }
+  std::uint64_t total() const { return filter + dynamic + exact + perturbed; }
 };
 
 /// True iff this build counts (meson option `counters`).

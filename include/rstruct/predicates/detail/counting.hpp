@@ -11,9 +11,9 @@
 
 namespace rstruct::predicates::detail {
 
-enum class Stage : unsigned char { filter, exact, perturbed };
+enum class Stage : unsigned char { filter, dynamic, exact, perturbed };
 
-using CounterTable = std::array<std::array<std::atomic<std::uint64_t>, 3>,
+using CounterTable = std::array<std::array<std::atomic<std::uint64_t>, 4>,
                                 static_cast<std::size_t>(PredicateId::count_)>;
 CounterTable& counter_table();
 

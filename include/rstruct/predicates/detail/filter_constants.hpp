@@ -69,4 +69,25 @@ inline constexpr double kPowerValue = 1.9985e-15;
 /// side_of_ball: S = max(M, |r|)², 2 roundings.
 inline constexpr double kBallSide = 2.1095e-15;
 
+/// Dynamic filters (dynamic_filter.hpp), tried after the semi-static one fails and before
+/// the exact stage: |D̃ − D| ≤ K·P̃ where P̃ is the "permanent" of the same expression tree
+/// (every leaf replaced by its absolute value, every subtraction by an addition) computed
+/// in floating point. Per-term error analysis: every term of the expanded tree carries at
+/// most n roundings (its leaves' differences included), so |D̃ − D| ≤ γ_n·P and
+/// P̃ ≥ (1 − γ_n)·P with γ_n = nu/(1 − nu); K·(1 − u) ≥ γ_n/(1 − γ_n) then covers the
+/// rounding of K·P̃ as well. proofs/filter_bounds.cpp counts n on the templates themselves
+/// (17 for both tests: the in-sphere test's heights subtract a zero weight difference,
+/// counted as a rounding too) and checks K, with the underflow margin the guard leaves.
+inline constexpr double kInsphereDynamic = 18 * pow2(-53);
+inline constexpr double kPowerTestDynamic = 18 * pow2(-53);
+/// Guard of the dynamic filters: every computed coordinate difference at most 2^100 in
+/// magnitude, every weight difference at most 2^200, and K·P̃ at least 2^-700 (normal, and
+/// far above the at most 2^-759 that underflowing products can add to the error then).
+struct DynamicGuard {
+  double max_difference;
+  double max_weight_difference;
+  double min_bound;
+};
+inline constexpr DynamicGuard kGuardDynamic{pow2(100), pow2(200), pow2(-700)};
+
 }  // namespace rstruct::predicates::detail::filter
