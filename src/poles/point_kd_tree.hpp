@@ -19,12 +19,12 @@ namespace rstruct::poles::detail {
 
 class PointKdTree {
  public:
-  /// Builds the tree over a copy of `points`.
-  explicit PointKdTree(std::span<const Point3> points)
+  /// Builds the tree over a copy of `points`, with up to `leaf_size` points per leaf.
+  explicit PointKdTree(std::span<const Point3> points, std::size_t leaf_size = 12)
       : order_(morton_order(points)),
         sorted_(reordered(points, order_)),
         adaptor_{sorted_},
-        tree_(3, adaptor_, nanoflann::KDTreeSingleIndexAdaptorParams(12)) {}
+        tree_(3, adaptor_, nanoflann::KDTreeSingleIndexAdaptorParams(leaf_size)) {}
   PointKdTree(const PointKdTree&) = delete;  // the tree refers to adaptor_
   PointKdTree& operator=(const PointKdTree&) = delete;
 
