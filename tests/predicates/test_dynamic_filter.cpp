@@ -38,6 +38,17 @@ int oracle_sign(const std::array<WeightedPoint, 5>& p) {
   return oracle::power_test(p[0], p[1], p[2], p[3], p[4]);
 }
 
+bool flat(const std::array<WeightedPoint, 5>& p) {
+  return oracle::orient3d(p[0].c, p[1].c, p[2].c, p[3].c) == 0;
+}
+
+/// The dynamic filter's answer, required to be the oracle's sign when it decides.
+int checked_dynamic(const std::array<WeightedPoint, 5>& p, bool weighted) {
+  const int d = dynamic(p, weighted);
+  if (d != pd::kUndecided) REQUIRE(d == oracle_sign(p));
+  return d;
+}
+
 /// Five points on (or, weighted, orthogonal to) a sphere of radius 1 about a centre at
 /// distance 3 from the origin (as the balls inscribed in a torus's tube), rounded to
 /// doubles: three in a small cap, two spread around, so the cell is long and thin; the
@@ -89,12 +100,9 @@ TEST_CASE("dynamic filter agrees with the oracle on every input family") {
           const auto q = make_points<5>(rng, family);
           for (std::size_t i = 0; i < 5; ++i) p[i] = {q[i], 0};
         }
-        if (oracle::orient3d(p[0].c, p[1].c, p[2].c, p[3].c) == 0) continue;
+        if (flat(p)) continue;
         ++tested;
-        const int d = dynamic(p, weighted);
-        if (d == pd::kUndecided) continue;
-        ++decided;
-        REQUIRE(d == oracle_sign(p));
+        decided += checked_dynamic(p, weighted) != pd::kUndecided;
       }
       CHECK(tested > 0);
       INFO(decided << " of " << tested << " decided");
@@ -112,11 +120,9 @@ TEST_CASE("dynamic filter decides the thin, nearly cospherical cells the semi-st
     long hard = 0, decided = 0;
     for (int n = 0; n < 4000; ++n) {
       const auto p = thin_cospherical(rng, weighted);
-      if (oracle::orient3d(p[0].c, p[1].c, p[2].c, p[3].c) == 0) continue;
-      const int truth = oracle_sign(p);
-      const int d = dynamic(p, weighted);
-      if (d != pd::kUndecided) REQUIRE(d == truth);
-      if (semi_static(p, weighted) != pd::kUndecided || truth == 0) continue;
+      if (flat(p)) continue;
+      const int d = checked_dynamic(p, weighted);
+      if (semi_static(p, weighted) != pd::kUndecided || oracle_sign(p) == 0) continue;
       ++hard;
       decided += d != pd::kUndecided;
     }
@@ -130,9 +136,9 @@ TEST_CASE("dynamic filter decides the thin, nearly cospherical cells the semi-st
 }
 
 // Cospherical up to the rounding of the input: the computed value is mostly rounding
-// error, the hardest case for the bound. The filter decides some of these
-// wrongly at u/4 instead of 18u (this test then fails; u passes it: the worst case is rare,
-// and the constant itself is checked by proofs/filter_bounds.cpp).
+// error, the hardest case for the bound. With a constant of u/4 instead of 18u the filter
+// decides some of these wrongly and this test fails (with u it passes: the worst case is
+// rare; the constant itself is checked by proofs/filter_bounds.cpp).
 TEST_CASE("dynamic filter on points cospherical up to rounding: never wrong") {
   const std::uint64_t seed = 0x5eed0703;
   INFO("seed " << seed);
@@ -142,12 +148,9 @@ TEST_CASE("dynamic filter on points cospherical up to rounding: never wrong") {
     long decided = 0, tested = 0;
     for (int n = 0; n < 6000; ++n) {
       const auto p = thin_cospherical(rng, weighted, false);
-      if (oracle::orient3d(p[0].c, p[1].c, p[2].c, p[3].c) == 0) continue;
+      if (flat(p)) continue;
       ++tested;
-      const int d = dynamic(p, weighted);
-      if (d == pd::kUndecided) continue;
-      ++decided;
-      REQUIRE(d == oracle_sign(p));
+      decided += checked_dynamic(p, weighted) != pd::kUndecided;
     }
     INFO(decided << " of " << tested << " decided");
     CHECK(tested > 5000);

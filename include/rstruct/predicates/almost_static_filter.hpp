@@ -129,14 +129,8 @@ class AlmostStaticFilter {
   int insphere_filter(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                       const Point3& e) const {
     if constexpr (check_level() >= 2) require_in_box({&a, &b, &c, &d, &e});
-    const Point3 ta = a - e, tb = b - e, tc = c - e, td = d - e;
-    using detail::lifted_height;
-    const detail::LiftedRows<double> rows{
-        ta.x, ta.y, ta.z, lifted_height(ta.x, ta.y, ta.z, 0.0),
-        tb.x, tb.y, tb.z, lifted_height(tb.x, tb.y, tb.z, 0.0),
-        tc.x, tc.y, tc.z, lifted_height(tc.x, tc.y, tc.z, 0.0),
-        td.x, td.y, td.z, lifted_height(td.x, td.y, td.z, 0.0)};
-    const double value = detail::lifted_det4_negated(rows);
+    const double value = detail::lifted_det4_negated(
+        detail::lifted_differences<false>(a, b, c, d, e, 0, 0, 0, 0, 0).rows);
     const int f = detail::decide(value, insphere_bound_, std::fabs(value) <= kMaxFinite);
     if (f != detail::kUndecided) [[likely]] RSTRUCT_PREDICATE_COUNT(insphere, filter);
     return f;

@@ -38,17 +38,8 @@ template <bool weighted>
 int lifted4_dynamic_filter(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                            const Point3& e, double aw, double bw, double cw, double dw,
                            double ew) {
-  const Point3 ta = a - e, tb = b - e, tc = c - e, td = d - e;
-  double wa = 0, wb = 0, wc = 0, wd = 0;
-  if constexpr (weighted) {
-    wa = aw - ew, wb = bw - ew, wc = cw - ew, wd = dw - ew;
-  } else {
-    (void)aw, (void)bw, (void)cw, (void)dw, (void)ew;
-  }
-  const LiftedRows<double> rows{ta.x, ta.y, ta.z, lifted_height(ta.x, ta.y, ta.z, wa),
-                                tb.x, tb.y, tb.z, lifted_height(tb.x, tb.y, tb.z, wb),
-                                tc.x, tc.y, tc.z, lifted_height(tc.x, tc.y, tc.z, wc),
-                                td.x, td.y, td.z, lifted_height(td.x, td.y, td.z, wd)};
+  const auto [ta, tb, tc, td, wa, wb, wc, wd, rows] =
+      lifted_differences<weighted>(a, b, c, d, e, aw, bw, cw, dw, ew);
   const double value = lifted_det4_negated(rows);
   const auto abs = [](double x) { return PermanentTerm{std::fabs(x)}; };
   const auto row = [&](const Point3& t, double w) {

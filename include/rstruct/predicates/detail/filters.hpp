@@ -72,27 +72,51 @@ inline int orient2d_filter(const Point3& a, const Point3& b, const Point3& c, in
   return decide(value, filter::kOrient2d * mu * mv, in_guard(mu < mv ? mu : mv, value, filter::kGuardDegree3));
 }
 
+/// The entries of the lifted determinant of a, b, c, d relative to e, as every filter of
+/// the in-sphere and power tests computes them (the evaluation order that
+/// proofs/filter_bounds.cpp analyses): the differences t = p − e, the weight differences
+/// w_p − w_e (zero when not `weighted`) and the rows (t, |t|² − (w_p − w_e)).
+struct LiftedDifferences {
+  Point3 ta, tb, tc, td;
+  double wa, wb, wc, wd;
+  LiftedRows<double> rows;
+};
+
+/// Always inlined: the triangulation's conflict search computes it for every cell it visits.
+template <bool weighted>
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+inline LiftedDifferences lifted_differences(const Point3& a, const Point3& b, const Point3& c,
+                                            const Point3& d, const Point3& e, double aw,
+                                            double bw, double cw, double dw, double ew) {
+  LiftedDifferences l;
+  l.ta = a - e, l.tb = b - e, l.tc = c - e, l.td = d - e;
+  if constexpr (weighted) {
+    l.wa = aw - ew, l.wb = bw - ew, l.wc = cw - ew, l.wd = dw - ew;
+  } else {
+    l.wa = l.wb = l.wc = l.wd = 0;
+    (void)aw, (void)bw, (void)cw, (void)dw, (void)ew;
+  }
+  l.rows = {l.ta.x, l.ta.y, l.ta.z, lifted_height(l.ta.x, l.ta.y, l.ta.z, l.wa),
+            l.tb.x, l.tb.y, l.tb.z, lifted_height(l.tb.x, l.tb.y, l.tb.z, l.wb),
+            l.tc.x, l.tc.y, l.tc.z, lifted_height(l.tc.x, l.tc.y, l.tc.z, l.wc),
+            l.td.x, l.td.y, l.td.z, lifted_height(l.td.x, l.td.y, l.td.z, l.wd)};
+  return l;
+}
+
 /// Sign of −det[(p − e, |p − e|² − (w_p − w_e))] for p = a, b, c, d (power test; with
 /// `weighted` false the weights are ignored: insphere).
 template <bool weighted>
 int lifted4_filter_points(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
                           const Point3& e, double aw, double bw, double cw, double dw,
                           double ew) {
-  const Point3 ta = a - e, tb = b - e, tc = c - e, td = d - e;
+  const auto [ta, tb, tc, td, wa, wb, wc, wd, rows] =
+      lifted_differences<weighted>(a, b, c, d, e, aw, bw, cw, dw, ew);
   const double mx = abs_max4(ta.x, tb.x, tc.x, td.x);
   const double my = abs_max4(ta.y, tb.y, tc.y, td.y);
   const double mz = abs_max4(ta.z, tb.z, tc.z, td.z);
   const double big = max2(max2(mx, my), mz);
-  double wa = 0, wb = 0, wc = 0, wd = 0;
-  if constexpr (weighted) {
-    wa = aw - ew, wb = bw - ew, wc = cw - ew, wd = dw - ew;
-  } else {
-    (void)aw, (void)bw, (void)cw, (void)dw, (void)ew;
-  }
-  const LiftedRows<double> rows{ta.x, ta.y, ta.z, lifted_height(ta.x, ta.y, ta.z, wa),
-                                tb.x, tb.y, tb.z, lifted_height(tb.x, tb.y, tb.z, wb),
-                                tc.x, tc.y, tc.z, lifted_height(tc.x, tc.y, tc.z, wc),
-                                td.x, td.y, td.z, lifted_height(td.x, td.y, td.z, wd)};
   const double value = lifted_det4_negated(rows);
   const filter::Guard& g = filter::kGuardDegree5;
   const bool ok = in_guard(min3(mx, my, mz), value, g);
