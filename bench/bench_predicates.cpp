@@ -330,7 +330,9 @@ int main(int argc, char** argv) {
     // After the semi-static filter: the dynamic filter, then (if it cannot decide) the
     // exact stage, against the exact stage alone.
     const auto thin = thin_cospherical_inputs(calls / 20, rng);
-    const auto T = [&](std::size_t i) -> const std::array<Point3, 5>& { return thin[i % thin.size()]; };
+    const auto T = [&](std::size_t i) -> const std::array<Point3, 5>& {
+      return thin[i % thin.size()];
+    };
     const double after_filter = time_ns(thin.size() - 5, runs, [&](std::size_t i) {
       const auto& p = T(i);
       return long(pd::insphere_after_filter(p[0], p[1], p[2], p[3], p[4]));

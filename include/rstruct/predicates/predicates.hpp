@@ -2,9 +2,10 @@
 /// \file
 /// Exact geometric predicates on double inputs: the only place in rstruct that looks at
 /// coordinates to decide something. Each predicate is exact for every finite double
-/// input (no overflow/underflow failure): a semi-static floating-point filter first,
-/// an exact stage when the filter cannot decide, and, for the in-sphere and power tests,
-/// a symbolic perturbation that never answers zero.
+/// input (no overflow/underflow failure): a semi-static floating-point filter first, for
+/// the in-sphere and power tests a dynamic filter next (detail/dynamic_filter.hpp), an exact
+/// stage when the filters cannot decide, and, for the in-sphere and power tests, a symbolic
+/// perturbation that never answers zero.
 ///
 /// Conventions (all predicates):
 ///  - orient3d(a, b, c, d) is the sign of det[b − a; c − a; d − a] (rows): positive iff d
@@ -57,7 +58,8 @@
 namespace rstruct::predicates {
 
 namespace detail {
-/// The stages after the filter (exact, then perturbation), out of line; each counts the
+/// The stages after the filter (for the in-sphere and power tests a dynamic filter, see
+/// detail/dynamic_filter.hpp; then exact, then perturbation), out of line; each counts the
 /// stage that decides. \pre the filter of the same predicate returned kUndecided.
 Sign orient3d_after_filter(const Point3& a, const Point3& b, const Point3& c,
                           const Point3& d);

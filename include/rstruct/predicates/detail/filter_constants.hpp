@@ -82,7 +82,7 @@ inline constexpr double kInsphereDynamic = 18 * pow2(-53);
 inline constexpr double kPowerTestDynamic = 18 * pow2(-53);
 /// Guard of the dynamic filters: every computed coordinate difference at most 2^100 in
 /// magnitude, every weight difference at most 2^200, and K·P̃ at least 2^-700 (normal, and
-/// far above the at most 2^-759 that underflowing products can add to the error then).
+/// far above the at most 2^-766 that underflowing products can add to the error then).
 struct DynamicGuard {
   double max_difference;
   double max_weight_difference;
