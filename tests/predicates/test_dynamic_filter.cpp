@@ -1,7 +1,7 @@
 // The dynamic filter of the lifted determinant (in-sphere and power tests): it agrees with
 // the rational oracle wherever it decides, on every input family and on the near-
-// cospherical long, thin cells that defeat the semi-static filter, where it must decide
-// most cases; its guard keeps it silent on huge, tiny and non-finite inputs.
+// cospherical long, thin cells that defeat the semi-static filter, where it must decide a
+// good share of them; its guard keeps it silent on huge, tiny and non-finite inputs.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -91,7 +91,7 @@ TEST_CASE("dynamic filter agrees with the oracle on every input family") {
       const Family family = static_cast<Family>(f);
       if (family == Family::coplanar || family == Family::collinear) continue;  // flat cells
       INFO("family " << family_name(family) << (weighted ? ", weighted" : ""));
-      long decided = 0, tested = 0;
+      long tested = 0;
       for (int n = 0; n < 600; ++n) {
         std::array<WeightedPoint, 5> p;
         if (weighted) {
@@ -102,11 +102,9 @@ TEST_CASE("dynamic filter agrees with the oracle on every input family") {
         }
         if (flat(p)) continue;
         ++tested;
-        decided += checked_dynamic(p, weighted) != pd::kUndecided;
+        checked_dynamic(p, weighted);
       }
       CHECK(tested > 0);
-      INFO(decided << " of " << tested << " decided");
-      SUCCEED();
     }
   }
 }
@@ -162,17 +160,14 @@ TEST_CASE("dynamic filter: the guard keeps it silent outside its range") {
   // A plain case decides (positive: e inside the circumsphere of the positive cell).
   REQUIRE(pd::lifted4_dynamic_filter<false>(a, b, c, d, e, 0, 0, 0, 0, 0) == 1);
   // Differences above 2^100, a bound below 2^-700: left to the exact stage.
-  const auto scaled = [](const Point3& p, int k) { return scale_pow2(p, k); };
-  CHECK(pd::lifted4_dynamic_filter<false>(scaled(a, 101), scaled(b, 101), scaled(c, 101),
-                                          scaled(d, 101), scaled(e, 101), 0, 0, 0, 0, 0) ==
-        pd::kUndecided);
-  CHECK(pd::lifted4_dynamic_filter<false>(scaled(a, 99), scaled(b, 99), scaled(c, 99),
-                                          scaled(d, 99), scaled(e, 99), 0, 0, 0, 0, 0) == 1);
-  CHECK(pd::lifted4_dynamic_filter<false>(scaled(a, -150), scaled(b, -150), scaled(c, -150),
-                                          scaled(d, -150), scaled(e, -150), 0, 0, 0, 0, 0) ==
-        pd::kUndecided);
-  CHECK(pd::lifted4_dynamic_filter<false>(scaled(a, -100), scaled(b, -100), scaled(c, -100),
-                                          scaled(d, -100), scaled(e, -100), 0, 0, 0, 0, 0) == 1);
+  const auto at_scale = [&](int k) {
+    return pd::lifted4_dynamic_filter<false>(scale_pow2(a, k), scale_pow2(b, k), scale_pow2(c, k),
+                                             scale_pow2(d, k), scale_pow2(e, k), 0, 0, 0, 0, 0);
+  };
+  CHECK(at_scale(101) == pd::kUndecided);
+  CHECK(at_scale(99) == 1);
+  CHECK(at_scale(-150) == pd::kUndecided);
+  CHECK(at_scale(-100) == 1);
   // Weight differences above 2^200.
   CHECK(pd::lifted4_dynamic_filter<true>(a, b, c, d, e, 0, 0, 0, 0, 0x1p201) == pd::kUndecided);
   CHECK(pd::lifted4_dynamic_filter<true>(a, b, c, d, e, 0, 0, 0, 0, -0.01) == 1);
