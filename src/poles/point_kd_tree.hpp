@@ -1,7 +1,7 @@
 #pragma once
-// A kd-tree over a span of points (nanoflann), used for the pole distance D̂ and for the
-// covering sets. Searches here only *propose* candidates: nanoflann's distances are plain
-// floating point, so every radius query is run with a slightly inflated radius and the
+// A kd-tree over a span of points (nanoflann), used for the covering sets (the pole
+// distance D̂ has its own, nearest_point_tree.hpp). Searches here only *propose*
+// candidates: nanoflann's distances are plain floating point, so every radius query is run with a slightly inflated radius and the
 // caller decides membership with an exact predicate (predicates::side_of_ball).
 // The tree keeps its own copy of the points in Morton order, so that a leaf's points are
 // contiguous in memory; every index it returns is an index into the caller's span.
@@ -29,28 +29,6 @@ class PointKdTree {
   PointKdTree& operator=(const PointKdTree&) = delete;
 
   std::size_t size() const { return sorted_.size(); }
-
-  /// Index of a point nearest to q in floating-point distance (ties: any). \pre size() > 0.
-  std::uint32_t nearest(const Point3& q, double* squared_distance_out = nullptr) const {
-    std::uint32_t index = 0;
-    double d2 = 0;
-    const double query[3] = {q.x, q.y, q.z};
-    tree_.knnSearch(query, 1, &index, &d2);
-    if (squared_distance_out != nullptr) *squared_distance_out = d2;
-    return order_[index];
-  }
-
-  /// Like nearest(), but starts from a known candidate: the point `index` at computed
-  /// squared distance `squared_distance` (as computed by rstruct::squared_distance, whose
-  /// summation order nanoflann shares). The search then prunes every subtree farther than
-  /// that, which makes it much faster when the candidate is close. Returns a point whose
-  /// squared distance is the minimum (ties: the candidate is kept).
-  std::uint32_t nearest_from(const Point3& q, std::uint32_t index, double squared_distance) const {
-    Nearest result{squared_distance, kInitial};
-    const double query[3] = {q.x, q.y, q.z};
-    tree_.findNeighbors(result, query, nanoflann::SearchParams());
-    return result.index == kInitial ? index : order_[result.index];
-  }
 
   /// Appends to `out` the indices of every point p with |p − q| ≤ r, and possibly a few
   /// more within a relative margin (the search radius is inflated so that floating-point
@@ -88,26 +66,12 @@ class PointKdTree {
       return true;
     }
   };
-  static constexpr std::uint32_t kInitial = 0xffffffffU;
   static std::vector<Point3> reordered(std::span<const Point3> points,
                                        const std::vector<std::uint32_t>& order) {
     std::vector<Point3> sorted(points.size());
     for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = points[order[k]];
     return sorted;
   }
-  struct Nearest {
-    double d2;
-    std::uint32_t index;
-    bool full() const { return true; }
-    double worstDist() const { return d2; }
-    bool addPoint(double d, std::uint32_t i) {
-      if (d < d2) {
-        d2 = d;
-        index = i;
-      }
-      return true;
-    }
-  };
   using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Adaptor>,
                                                    Adaptor, 3, std::uint32_t>;
   std::vector<std::uint32_t> order_;  // tree position → caller's index

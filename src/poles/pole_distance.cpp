@@ -5,7 +5,7 @@
 #include <functional>
 #include <mutex>
 
-#include "point_kd_tree.hpp"
+#include "nearest_point_tree.hpp"
 #include "spatial_order.hpp"
 #include "rstruct/core/error.hpp"
 #include "rstruct/core/parallel.hpp"
@@ -72,11 +72,9 @@ PoleDistance sample_pole_distance(std::span<const Point3> samples, const PoleSet
     if (side != nullptr) (*side)();
     return {};
   }
-  // Leaves of 24 poles: the nearest pole lies on the far side of a large empty ball, whose
-  // boundary crosses many small leaves (10^6 torus samples, 200,000 queries on one thread,
-  // two orders of the sizes: leaves of 12 poles 1.03-1.06 s, of 16 0.97-1.00 s, of 24
-  // 0.94-1.00 s, of 32 0.92-0.96 s; the tree is built once, the queries dominate).
-  const detail::PointKdTree tree(poles.centre, 24);
+  // The nearest pole lies on the far side of a large empty ball, whose boundary crosses
+  // many leaves: see nearest_point_tree.hpp for the tree and its figures.
+  const detail::NearestPointTree tree(poles.centre);
   const auto from_own_poles = [&](std::size_t i) {
     std::uint32_t best = kNoPole;
     double best_d2 = HUGE_VAL;
@@ -99,7 +97,7 @@ PoleDistance pole_distance(std::span<const Point3> points, std::span<const Point
                            unsigned threads) {
   check_inputs(points, pole_centres);
   if (points.empty()) return {};
-  const detail::PointKdTree tree(pole_centres);
+  const detail::NearestPointTree tree(pole_centres);
   return run_queries(points, pole_centres, threads,
                      [&](std::size_t i) { return tree.nearest(points[i]); });
 }

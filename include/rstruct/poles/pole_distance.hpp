@@ -5,10 +5,11 @@
 /// Corollary 5.5: 0.817·D̂(s) ≤ l̃fs(s) ≤ D̂(s).
 ///
 /// D̂ is a measurement on constructed points (the poles are rounded circumcentres): it is
-/// computed in floating point with a kd-tree over the poles, and is exact up to rounding for
-/// those double poles (the nearest pole is found by floating-point distances; when two poles
-/// are equally near up to rounding either may be reported, with the same distance up to a
-/// few ulps).
+/// computed in floating point with a kd-tree over the poles. The nearest pole is the one
+/// with the smallest computed squared distance, the smallest index among equal ones: the
+/// pole a linear scan in index order finds (pole_distance_brute_force), whatever the tree,
+/// the threads or the starting pole; D̂ is the square root of that squared distance's
+/// recomputation, so all three functions return the same doubles.
 
 #include <cstdint>
 #include <functional>
@@ -34,7 +35,7 @@ PoleDistance pole_distance(std::span<const Point3> points, std::span<const Point
 
 /// The same, for the samples of `poles`: each search starts from the nearer of the sample's
 /// own poles, which bounds D̂(s) and prunes the kd-tree search early. Same result as
-/// pole_distance(samples, poles.centre) (the minimum squared distance is the same double).
+/// pole_distance(samples, poles.centre).
 /// \throws InvalidInput as pole_distance, or if samples.size() != poles.sample_count.
 PoleDistance pole_distance(std::span<const Point3> samples, const PoleSet& poles,
                            unsigned threads = 0);

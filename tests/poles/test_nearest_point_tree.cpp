@@ -1,0 +1,196 @@
+// The pole distance's kd-tree (src/poles/nearest_point_tree.hpp) returns exactly the point
+// a linear scan in index order returns: the smallest squared distance as
+// rstruct::squared_distance computes it, the smallest index among equal ones. Checked on
+// random, clustered, duplicate-heavy and tie-heavy sets, at extreme scales, with every leaf
+// size and both leaf scans, from no start and from a given one.
+
+#include "poles/nearest_point_tree.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+#include <rapidcheck/catch.h>
+#include <vector>
+
+using rstruct::Point3;
+using rstruct::poles::detail::NearestPointTree;
+
+namespace {
+
+/// The reference: a scan in index order, strict comparison (the first minimum wins).
+std::uint32_t scan_nearest(std::span<const Point3> points, const Point3& q) {
+  std::uint32_t best = 0;
+  double best_d2 = rstruct::squared_distance(q, points[0]);
+  for (std::uint32_t i = 1; i < points.size(); ++i) {
+    const double d2 = rstruct::squared_distance(q, points[i]);
+    if (d2 < best_d2) {
+      best_d2 = d2;
+      best = i;
+    }
+  }
+  return best;
+}
+
+/// Every query against the scan, from no start and from a start drawn among the points.
+void check_queries(std::span<const Point3> points, std::span<const Point3> queries,
+                   std::uint32_t leaf, NearestPointTree::Scan scan, std::mt19937_64& rng) {
+  const NearestPointTree tree(points, leaf, scan);
+  std::uniform_int_distribution<std::uint32_t> any(0, static_cast<std::uint32_t>(points.size() - 1));
+  for (const Point3& q : queries) {
+    const std::uint32_t expected = scan_nearest(points, q);
+    RC_ASSERT(tree.nearest(q) == expected);
+    const std::uint32_t start = any(rng);
+    RC_ASSERT(tree.nearest_from(q, start, rstruct::squared_distance(q, points[start])) == expected);
+    // The answer itself as the start: kept.
+    RC_ASSERT(tree.nearest_from(q, expected, rstruct::squared_distance(q, points[expected])) ==
+              expected);
+  }
+}
+
+enum class Shape { uniform, clustered, grid, line, duplicates };
+
+std::vector<Point3> make_points(Shape shape, std::size_t n, double scale, double offset,
+                                std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Point3> points;
+  points.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Point3 p;
+    switch (shape) {
+      case Shape::uniform: p = {u(rng), u(rng), u(rng)}; break;
+      case Shape::clustered: {
+        // A few tight clusters far apart: many thin, empty-bordered cells.
+        const double c = static_cast<double>(i % 5) * 10.0;
+        p = {c + 1e-4 * u(rng), -c + 1e-4 * u(rng), 1e-4 * u(rng)};
+        break;
+      }
+      case Shape::grid: {
+        // Integer grid points in a random order: many exactly equal distances.
+        std::uniform_int_distribution<int> g(-4, 4);
+        p = {double(g(rng)), double(g(rng)), double(g(rng))};
+        break;
+      }
+      case Shape::line: p = {u(rng), 0.0, 0.0}; break;
+      case Shape::duplicates: {
+        std::uniform_int_distribution<int> g(0, 3);
+        p = {double(g(rng)), 0.5 * double(g(rng)), 0.0};
+        break;
+      }
+    }
+    points.push_back({offset + scale * p.x, offset + scale * p.y, scale * p.z});
+  }
+  return points;
+}
+
+}  // namespace
+
+TEST_CASE("nearest point: the tree returns the scan's point, ties to the smallest index") {
+  rc::prop("tree vs scan", [] {
+    const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+    const auto shape = *rc::gen::element(Shape::uniform, Shape::clustered, Shape::grid,
+                                         Shape::line, Shape::duplicates);
+    const auto n = *rc::gen::inRange<std::size_t>(1, 700);
+    // Scales whose squares stay normal, reach the subnormals, or overflow to infinity.
+    const double scale = *rc::gen::element(1.0, 1e-3, 250.0, 1e-160, 1e200);
+    const double offset = *rc::gen::element(0.0, 1e6, -3.5e8);
+    const auto leaf = *rc::gen::element(1U, 2U, 5U, 64U);
+    const auto scan = *rc::gen::element(NearestPointTree::Scan::best,
+                                        NearestPointTree::Scan::portable);
+    RC_LOG() << "seed " << seed << "\n";
+    std::mt19937_64 rng(seed);
+    const auto points = make_points(shape, n, scale, offset, rng);
+    // Queries: new points of the same shape (grid: lattice and half-lattice points, the
+    // centres of cells and edges, equidistant from several points), points of the set,
+    // and points far outside.
+    std::vector<Point3> queries = make_points(shape, 20, scale, offset, rng);
+    if (shape == Shape::grid) {
+      for (Point3& q : queries) q = {q.x + 0.5 * scale, q.y + 0.5 * scale, q.z};
+    }
+    for (std::size_t k = 0; k < 5; ++k) queries.push_back(points[k % n]);
+    queries.push_back({offset + 1e3 * scale, -1e3 * scale, 7 * scale});
+    check_queries(points, queries, leaf, scan, rng);
+  });
+}
+
+TEST_CASE("nearest point: equidistant points in different subtrees, smallest index wins") {
+  // The eight corners of a cube around the query, listed in every rotation of the order, with
+  // many other points so that the corners land in different leaves.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(3.0, 9.0);
+  std::vector<Point3> far_points(3000);
+  for (Point3& p : far_points) p = {u(rng), u(rng), u(rng)};
+  std::vector<Point3> corners;
+  for (int k = 0; k < 8; ++k) corners.push_back({(k & 1) ? 1.0 : -1.0, (k & 2) ? 1.0 : -1.0,
+                                                 (k & 4) ? 1.0 : -1.0});
+  for (int rotation = 0; rotation < 8; ++rotation) {
+    std::vector<Point3> points = far_points;
+    std::vector<std::uint32_t> corner_index;
+    for (int k = 0; k < 8; ++k) {
+      // Corners spread through the index range, the first listed one at a random spot.
+      const auto at = static_cast<std::size_t>((k * 397 + rotation * 131) % points.size());
+      points.insert(points.begin() + static_cast<std::ptrdiff_t>(at), corners[(k + rotation) % 8]);
+    }
+    std::uint32_t expected = 0xffffffffu;
+    for (std::uint32_t i = 0; i < points.size(); ++i) {
+      if (std::abs(points[i].x) == 1.0 && std::abs(points[i].y) == 1.0 &&
+          std::abs(points[i].z) == 1.0) {
+        expected = std::min(expected, i);
+      }
+    }
+    for (const std::uint32_t leaf : {1U, 4U, 64U}) {
+      for (const auto scan : {NearestPointTree::Scan::best, NearestPointTree::Scan::portable}) {
+        const NearestPointTree tree(points, leaf, scan);
+        CHECK(tree.nearest({0, 0, 0}) == expected);
+        // From the largest-index corner: the search must still find the smaller one.
+        std::uint32_t last_corner = 0;
+        for (std::uint32_t i = 0; i < points.size(); ++i) {
+          if (std::abs(points[i].x) == 1.0 && std::abs(points[i].y) == 1.0 &&
+              std::abs(points[i].z) == 1.0) {
+            last_corner = i;
+          }
+        }
+        CHECK(tree.nearest_from({0, 0, 0}, last_corner, 3.0) == expected);
+      }
+    }
+  }
+}
+
+TEST_CASE("nearest point: degenerate sets") {
+  SECTION("one point, and many copies of one point") {
+    const std::vector<Point3> one = {{1, 2, 3}};
+    CHECK(NearestPointTree(one).nearest({-5, 0, 0}) == 0);
+    const std::vector<Point3> same(1000, Point3{1, 2, 3});
+    for (const std::uint32_t leaf : {1U, 64U}) {
+      const NearestPointTree tree(same, leaf);
+      CHECK(tree.nearest({0, 0, 0}) == 0);
+      CHECK(tree.nearest_from({0, 0, 0}, 999, rstruct::squared_distance({0, 0, 0}, same[0])) == 0);
+    }
+  }
+  SECTION("a geometric progression: middle splits peel one point at a time") {
+    // 1, 1/2, 1/4, ...: the middle of the cell leaves one point on one side at every level,
+    // so the tree turns to median splits past its middle-split depth (no deep recursion).
+    std::vector<Point3> points;
+    for (int k = 0; k < 1000; ++k) points.push_back({std::ldexp(1.0, -k), 0, 0});
+    std::mt19937_64 rng(5);
+    std::shuffle(points.begin(), points.end(), rng);
+    const NearestPointTree tree(points, 1);
+    for (const double x : {0.0, 1e-300, 0x1p-500, 0.3, 0.75, 2.0}) {
+      CHECK(tree.nearest({x, 0, 0}) == scan_nearest(points, {x, 0, 0}));
+    }
+  }
+  SECTION("no points") {
+    const NearestPointTree tree(std::span<const Point3>{});
+    CHECK(tree.size() == 0);
+    CHECK(tree.nearest_from({0, 0, 0}, 7, 1.0) == 7);
+  }
+}
+
+TEST_CASE("nearest point: the vector scan is used where the processor has AVX2") {
+  const std::vector<Point3> points = {{0, 0, 0}, {1, 1, 1}};
+  const NearestPointTree portable(points, 64, NearestPointTree::Scan::portable);
+  CHECK_FALSE(portable.vectorized());
+#if defined(__x86_64__)
+  const NearestPointTree best(points, 64, NearestPointTree::Scan::best);
+  CHECK(best.vectorized() == (__builtin_cpu_supports("avx2") != 0));
+#endif
+}
