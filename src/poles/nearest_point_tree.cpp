@@ -21,13 +21,18 @@
 // points on one side (queries 1.8x slower than nanoflann). Only below depth
 // kMaxMiddleDepth do the splits become median splits, to bound the recursion.
 //
-// Measured (10^6 samples uniform on a torus R/a = 3, 1.69·10^6 poles; 200,000 queries in
-// Morton order, one thread; nanoflann with leaves of 24, as pole_distance used before):
-//   nanoflann                          1.07-1.09 s
-//   here, AVX2, leaves of 16/32/64/128  0.84-0.87 / 0.68-0.72 / 0.58-0.60 / 0.56 s
-//   here, AVX-512 (8 points at a time), leaves of 64: 0.55-0.58 s (not worth a third path)
-// 85,000 samples (1.4·10^5 poles), all queries: nanoflann 0.175 s, leaves of 64 0.105 s.
-// Leaves of 64: each query then visits about 250 nodes and scans about 3,300 points.
+// Measured, one thread, queries in Morton order from the nearer own pole as pole_distance
+// runs them, against nanoflann with leaves of 24 (what pole_distance used before):
+// - bench_seed's 10^6-sample torus (1.7·10^6 poles), 200,000 queries: build 0.46-0.60 ->
+//   0.21-0.28 s, queries 0.82-0.84 -> 0.48 s; with the portable scan 0.92 s.
+// - 10^6 samples uniform on a torus R/a = 3 (1.69·10^6 poles), 200,000 queries, on a slow
+//   phase of the machine: queries 1.51-1.54 -> 0.78-0.84 s (portable scan 1.61-1.67 s);
+//   the build takes as long as nanoflann's. 85,000 such samples, all queries: 0.245 ->
+//   0.146-0.152 s.
+// - Leaf sizes (first version of this tree, uniform torus): 16/32/64/128 points 0.84-0.87 /
+//   0.68-0.72 / 0.58-0.60 / 0.56 s; scanning 8 points at a time with AVX-512, leaves of 64:
+//   0.55-0.58 s, not worth a third path. With leaves of 64 a query visits about 250 nodes
+//   and scans about 3,300 points.
 
 namespace rstruct::poles::detail {
 namespace {
@@ -120,9 +125,9 @@ NearestPointTree::NearestPointTree(std::span<const Point3> points, std::uint32_t
 
 /// Builds the subtree of the ids [first, last), whose points lie in `region` (the cell the
 /// splits above cut out) and span `tight`; returns its node.
-std::uint32_t NearestPointTree::build(std::uint32_t* first, std::uint32_t* last,
-                                      const Box& region, const Box& tight,
-                                      std::span<const Point3> points, unsigned depth) {
+std::uint32_t NearestPointTree::build(std::uint32_t* first, std::uint32_t* last, const Box& region,
+                                      const Box& tight, std::span<const Point3> points,
+                                      unsigned depth) {
   const auto id = static_cast<std::uint32_t>(nodes_.size());
   nodes_.emplace_back();
   const auto n = static_cast<std::size_t>(last - first);
@@ -146,7 +151,8 @@ std::uint32_t NearestPointTree::build(std::uint32_t* first, std::uint32_t* last,
   const auto coordinate = [&](std::uint32_t i) { return points[i][axis]; };
   const double split =
       std::clamp(0.5 * (region[axis][0] + region[axis][1]), tight[axis][0], tight[axis][1]);
-  std::uint32_t* below = std::partition(first, last, [&](std::uint32_t i) { return coordinate(i) < split; });
+  std::uint32_t* below =
+      std::partition(first, last, [&](std::uint32_t i) { return coordinate(i) < split; });
   std::uint32_t* mid = below;
   if (static_cast<std::size_t>(below - first) <= n / 2) {
     std::uint32_t* at_most =
@@ -219,7 +225,9 @@ void NearestPointTree::search(std::uint32_t id, const double* q, double* cut, Be
   search(lower_first ? node.first : node.last, q, cut, best);
   const double saved = cut[axis];
   cut[axis] = gap * gap;
-  if (!skippable(lower_bound(cut), best.d2)) search(lower_first ? node.last : node.first, q, cut, best);
+  if (!skippable(lower_bound(cut), best.d2)) {
+    search(lower_first ? node.last : node.first, q, cut, best);
+  }
   cut[axis] = saved;
 }
 

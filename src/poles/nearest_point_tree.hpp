@@ -53,8 +53,8 @@ class NearestPointTree {
  private:
   using Box = std::array<std::array<double, 2>, 3>;  // per axis: {low, high}
   struct Node {
-    double low = 0;   // inner: the largest coordinate of the lower child along `axis`
-    double high = 0;  // inner: the smallest coordinate of the upper child along `axis`
+    double low = 0;           // inner: the largest coordinate of the lower child along `axis`
+    double high = 0;          // inner: the smallest coordinate of the upper child along `axis`
     std::uint32_t first = 0;  // inner: lower child; leaf: first slot in the coordinate arrays
     std::uint32_t last = 0;   // inner: upper child; leaf: one past its last slot
     std::uint8_t axis = 0;

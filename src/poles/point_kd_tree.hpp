@@ -1,8 +1,9 @@
 #pragma once
 // A kd-tree over a span of points (nanoflann), used for the covering sets (the pole
 // distance D̂ has its own, nearest_point_tree.hpp). Searches here only *propose*
-// candidates: nanoflann's distances are plain floating point, so every radius query is run with a slightly inflated radius and the
-// caller decides membership with an exact predicate (predicates::side_of_ball).
+// candidates: nanoflann's distances are plain floating point, so every radius query is run
+// with a slightly inflated radius and the caller decides membership with an exact
+// predicate (predicates::side_of_ball).
 // The tree keeps its own copy of the points in Morton order, so that a leaf's points are
 // contiguous in memory; every index it returns is an index into the caller's span.
 

@@ -73,7 +73,7 @@ PoleDistance sample_pole_distance(std::span<const Point3> samples, const PoleSet
     return {};
   }
   // The nearest pole lies on the far side of a large empty ball, whose boundary crosses
-  // many leaves: see nearest_point_tree.hpp for the tree and its figures.
+  // many leaves: see nearest_point_tree.hpp for the tree, its .cpp for the figures.
   const detail::NearestPointTree tree(poles.centre);
   const auto from_own_poles = [&](std::size_t i) {
     std::uint32_t best = kNoPole;

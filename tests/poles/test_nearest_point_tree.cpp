@@ -4,13 +4,14 @@
 // random, clustered, duplicate-heavy and tie-heavy sets, at extreme scales, with every leaf
 // size and both leaf scans, from no start and from a given one.
 
-#include "poles/nearest_point_tree.hpp"
+#include <rapidcheck/catch.h>
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
-#include <rapidcheck/catch.h>
 #include <vector>
+
+#include "poles/nearest_point_tree.hpp"
 
 using rstruct::Point3;
 using rstruct::poles::detail::NearestPointTree;
@@ -35,7 +36,8 @@ std::uint32_t scan_nearest(std::span<const Point3> points, const Point3& q) {
 void check_queries(std::span<const Point3> points, std::span<const Point3> queries,
                    std::uint32_t leaf, NearestPointTree::Scan scan, std::mt19937_64& rng) {
   const NearestPointTree tree(points, leaf, scan);
-  std::uniform_int_distribution<std::uint32_t> any(0, static_cast<std::uint32_t>(points.size() - 1));
+  std::uniform_int_distribution<std::uint32_t> any(0,
+                                                   static_cast<std::uint32_t>(points.size() - 1));
   for (const Point3& q : queries) {
     const std::uint32_t expected = scan_nearest(points, q);
     RC_ASSERT(tree.nearest(q) == expected);
@@ -57,7 +59,9 @@ std::vector<Point3> make_points(Shape shape, std::size_t n, double scale, double
   for (std::size_t i = 0; i < n; ++i) {
     Point3 p;
     switch (shape) {
-      case Shape::uniform: p = {u(rng), u(rng), u(rng)}; break;
+      case Shape::uniform:
+        p = {u(rng), u(rng), u(rng)};
+        break;
       case Shape::clustered: {
         // A few tight clusters far apart: many thin, empty-bordered cells.
         const double c = static_cast<double>(i % 5) * 10.0;
@@ -70,7 +74,9 @@ std::vector<Point3> make_points(Shape shape, std::size_t n, double scale, double
         p = {double(g(rng)), double(g(rng)), double(g(rng))};
         break;
       }
-      case Shape::line: p = {u(rng), 0.0, 0.0}; break;
+      case Shape::line:
+        p = {u(rng), 0.0, 0.0};
+        break;
       case Shape::duplicates: {
         std::uniform_int_distribution<int> g(0, 3);
         p = {double(g(rng)), 0.5 * double(g(rng)), 0.0};
@@ -87,15 +93,15 @@ std::vector<Point3> make_points(Shape shape, std::size_t n, double scale, double
 TEST_CASE("nearest point: the tree returns the scan's point, ties to the smallest index") {
   rc::prop("tree vs scan", [] {
     const auto seed = *rc::gen::arbitrary<std::uint64_t>();
-    const auto shape = *rc::gen::element(Shape::uniform, Shape::clustered, Shape::grid,
-                                         Shape::line, Shape::duplicates);
+    const auto shape = *rc::gen::element(Shape::uniform, Shape::clustered, Shape::grid, Shape::line,
+                                         Shape::duplicates);
     const auto n = *rc::gen::inRange<std::size_t>(1, 700);
     // Scales whose squares stay normal, reach the subnormals, or overflow to infinity.
     const double scale = *rc::gen::element(1.0, 1e-3, 250.0, 1e-160, 1e200);
     const double offset = *rc::gen::element(0.0, 1e6, -3.5e8);
     const auto leaf = *rc::gen::element(1U, 2U, 5U, 64U);
-    const auto scan = *rc::gen::element(NearestPointTree::Scan::best,
-                                        NearestPointTree::Scan::portable);
+    const auto scan =
+        *rc::gen::element(NearestPointTree::Scan::best, NearestPointTree::Scan::portable);
     RC_LOG() << "seed " << seed << "\n";
     std::mt19937_64 rng(seed);
     const auto points = make_points(shape, n, scale, offset, rng);
@@ -120,8 +126,8 @@ TEST_CASE("nearest point: equidistant points in different subtrees, smallest ind
   std::vector<Point3> far_points(3000);
   for (Point3& p : far_points) p = {u(rng), u(rng), u(rng)};
   std::vector<Point3> corners;
-  for (int k = 0; k < 8; ++k) corners.push_back({(k & 1) ? 1.0 : -1.0, (k & 2) ? 1.0 : -1.0,
-                                                 (k & 4) ? 1.0 : -1.0});
+  for (int k = 0; k < 8; ++k)
+    corners.push_back({(k & 1) ? 1.0 : -1.0, (k & 2) ? 1.0 : -1.0, (k & 4) ? 1.0 : -1.0});
   for (int rotation = 0; rotation < 8; ++rotation) {
     std::vector<Point3> points = far_points;
     std::vector<std::uint32_t> corner_index;
