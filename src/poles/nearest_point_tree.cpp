@@ -54,15 +54,16 @@ bool skippable(double bound, double best) { return bound > best * (1 + 0x1p-40) 
 
 double lower_bound(const double* cut) { return (cut[0] + cut[1]) + cut[2]; }
 
-std::array<std::array<double, 2>, 3> box_of(const std::uint32_t* first, const std::uint32_t* last,
-                                            std::span<const Point3> points) {
-  std::array<std::array<double, 2>, 3> box;
-  for (auto& axis : box) axis = {HUGE_VAL, -HUGE_VAL};
+/// The points' bounding box. Not Box3::add: its NaN-aware fmin and fmax made the whole
+/// build 2.5-3x slower (10^6-sample torus poles: 0.19-0.29 s -> 0.57-0.75 s); the points
+/// here are finite.
+Box3 box_of(const std::uint32_t* first, const std::uint32_t* last, std::span<const Point3> points) {
+  Box3 box;
   for (const std::uint32_t* it = first; it != last; ++it) {
     const Point3& p = points[*it];
     for (std::size_t d = 0; d < 3; ++d) {
-      box[d][0] = std::min(box[d][0], p[d]);
-      box[d][1] = std::max(box[d][1], p[d]);
+      box.lo[d] = std::min(box.lo[d], p[d]);
+      box.hi[d] = std::max(box.hi[d], p[d]);
     }
   }
   return box;
@@ -125,8 +126,8 @@ NearestPointTree::NearestPointTree(std::span<const Point3> points, std::uint32_t
 
 /// Builds the subtree of the ids [first, last), whose points lie in `region` (the cell the
 /// splits above cut out) and span `tight`; returns its node.
-std::uint32_t NearestPointTree::build(std::uint32_t* first, std::uint32_t* last, const Box& region,
-                                      const Box& tight, std::span<const Point3> points,
+std::uint32_t NearestPointTree::build(std::uint32_t* first, std::uint32_t* last, const Box3& region,
+                                      const Box3& tight, std::span<const Point3> points,
                                       unsigned depth) {
   const auto id = static_cast<std::uint32_t>(nodes_.size());
   nodes_.emplace_back();
@@ -138,19 +139,18 @@ std::uint32_t NearestPointTree::build(std::uint32_t* first, std::uint32_t* last,
     leaf.last = static_cast<std::uint32_t>(last - ids_base_);
     return id;
   }
-  double widest = 0;
-  for (const auto& side : region) widest = std::max(widest, side[1] - side[0]);
+  const double widest = region.max_extent();
   std::size_t axis = 0;
   double spread = -1;
   for (std::size_t d = 0; d < 3; ++d) {
-    if (region[d][1] - region[d][0] >= (1 - 1e-5) * widest && tight[d][1] - tight[d][0] > spread) {
-      spread = tight[d][1] - tight[d][0];
+    if (region.hi[d] - region.lo[d] >= (1 - 1e-5) * widest && tight.hi[d] - tight.lo[d] > spread) {
+      spread = tight.hi[d] - tight.lo[d];
       axis = d;
     }
   }
   const auto coordinate = [&](std::uint32_t i) { return points[i][axis]; };
   const double split =
-      std::clamp(0.5 * (region[axis][0] + region[axis][1]), tight[axis][0], tight[axis][1]);
+      std::clamp(0.5 * (region.lo[axis] + region.hi[axis]), tight.lo[axis], tight.hi[axis]);
   std::uint32_t* below =
       std::partition(first, last, [&](std::uint32_t i) { return coordinate(i) < split; });
   std::uint32_t* mid = below;
@@ -167,17 +167,17 @@ std::uint32_t NearestPointTree::build(std::uint32_t* first, std::uint32_t* last,
     });
     cut = coordinate(*mid);
   }
-  const Box lower_tight = box_of(first, mid, points);
-  const Box upper_tight = box_of(mid, last, points);
-  Box lower_region = region, upper_region = region;
-  lower_region[axis][1] = cut;
-  upper_region[axis][0] = cut;
+  const Box3 lower_tight = box_of(first, mid, points);
+  const Box3 upper_tight = box_of(mid, last, points);
+  Box3 lower_region = region, upper_region = region;
+  lower_region.hi[axis] = cut;
+  upper_region.lo[axis] = cut;
   const std::uint32_t lower = build(first, mid, lower_region, lower_tight, points, depth + 1);
   const std::uint32_t upper = build(mid, last, upper_region, upper_tight, points, depth + 1);
   Node& node = nodes_[id];
   node.axis = static_cast<std::uint8_t>(axis);
-  node.low = lower_tight[axis][1];
-  node.high = upper_tight[axis][0];
+  node.low = lower_tight.hi[axis];
+  node.high = upper_tight.lo[axis];
   node.first = lower;
   node.last = upper;
   return id;
@@ -195,8 +195,8 @@ std::uint32_t NearestPointTree::nearest_from(const Point3& q, std::uint32_t inde
   // Squared gaps between q and the root's box, per axis (zero inside it).
   double cut[3];
   for (std::size_t d = 0; d < 3; ++d) {
-    const double gap = query[d] < root_box_[d][0]   ? root_box_[d][0] - query[d]
-                       : query[d] > root_box_[d][1] ? query[d] - root_box_[d][1]
+    const double gap = query[d] < root_box_.lo[d]   ? root_box_.lo[d] - query[d]
+                       : query[d] > root_box_.hi[d] ? query[d] - root_box_.hi[d]
                                                     : 0.0;
     cut[d] = gap * gap;
   }

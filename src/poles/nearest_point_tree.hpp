@@ -51,7 +51,6 @@ class NearestPointTree {
   std::uint32_t nearest_from(const Point3& q, std::uint32_t index, double squared_distance) const;
 
  private:
-  using Box = std::array<std::array<double, 2>, 3>;  // per axis: {low, high}
   struct Node {
     double low = 0;           // inner: the largest coordinate of the lower child along `axis`
     double high = 0;          // inner: the smallest coordinate of the upper child along `axis`
@@ -65,8 +64,8 @@ class NearestPointTree {
     std::uint32_t index;
   };
 
-  std::uint32_t build(std::uint32_t* first, std::uint32_t* last, const Box& region,
-                      const Box& tight, std::span<const Point3> points, unsigned depth);
+  std::uint32_t build(std::uint32_t* first, std::uint32_t* last, const Box3& region,
+                      const Box3& tight, std::span<const Point3> points, unsigned depth);
   void search(std::uint32_t node, const double* q, double* cut, Best& best) const;
   void scan_leaf(const Node& node, const double* q, Best& best) const;
   void scan_leaf_avx2(const Node& node, const double* q, Best& best) const;
@@ -75,7 +74,7 @@ class NearestPointTree {
   std::uint32_t leaf_size_;
   bool vectorized_ = false;
   std::uint32_t* ids_base_ = nullptr;  // during construction: the ids being partitioned
-  Box root_box_{};
+  Box3 root_box_;
   std::vector<Node> nodes_;
   // The points in leaf order, by coordinate, each leaf padded with NaN to a multiple of 4
   // (a NaN distance never compares as small); index_ maps a slot to the point's index.
