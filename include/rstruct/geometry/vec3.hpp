@@ -4,6 +4,7 @@
 /// only for constructions and measurements, never for combinatorial decisions: those go
 /// through rstruct/predicates.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -67,10 +68,13 @@ constexpr double power_distance(const Point3& x, const WeightedPoint& p) {
 struct Box3 {
   Point3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL};
   Point3 hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  /// A NaN coordinate of p leaves the box as it was (as std::fmin and std::fmax would, but
+  /// std::min and std::max with the box's value first compile to plain min/max
+  /// instructions: a kd-tree build that bounds every node went 2.5-3x faster).
   void add(const Point3& p) {
     for (std::size_t i = 0; i < 3; ++i) {
-      lo[i] = std::fmin(lo[i], p[i]);
-      hi[i] = std::fmax(hi[i], p[i]);
+      lo[i] = std::min(lo[i], p[i]);
+      hi[i] = std::max(hi[i], p[i]);
     }
   }
   bool empty() const { return lo.x > hi.x; }
