@@ -20,12 +20,14 @@ namespace rstruct::poles::detail {
 
 class PointKdTree {
  public:
-  /// Builds the tree over a copy of `points`, with up to `leaf_size` points per leaf.
-  explicit PointKdTree(std::span<const Point3> points, std::size_t leaf_size = 12)
+  /// Builds the tree over a copy of `points`, with up to 12 points per leaf (leaves of 24
+  /// made the covering sets' queries only 5 % faster: 300,000 balls of the 10^6 torus,
+  /// 0.355 -> 0.338 s).
+  explicit PointKdTree(std::span<const Point3> points)
       : order_(morton_order(points)),
         sorted_(reordered(points, order_)),
         adaptor_{sorted_},
-        tree_(3, adaptor_, nanoflann::KDTreeSingleIndexAdaptorParams(leaf_size)) {}
+        tree_(3, adaptor_, nanoflann::KDTreeSingleIndexAdaptorParams(12)) {}
   PointKdTree(const PointKdTree&) = delete;  // the tree refers to adaptor_
   PointKdTree& operator=(const PointKdTree&) = delete;
 
