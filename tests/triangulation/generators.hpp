@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <set>
 #include <tuple>
 #include <vector>
@@ -116,6 +117,30 @@ inline triangulation::RegularTriangulation3 build(
     const Input& in, const triangulation::TriangulationOptions& options = {}) {
   return in.weights.empty() ? triangulation::RegularTriangulation3(in.points, options)
                             : triangulation::RegularTriangulation3(in.points, in.weights, options);
+}
+
+/// n points on the torus of radii 1 and 0.3 around the z axis, uniform in its angles.
+inline std::vector<Point3> torus_points(std::size_t n, std::uint64_t seed) {
+  Random r(seed);
+  std::vector<Point3> p(n);
+  for (Point3& q : p) {
+    const double u = 2 * std::numbers::pi * r.uniform();
+    const double v = 2 * std::numbers::pi * r.uniform();
+    q = {(1 + 0.3 * std::cos(v)) * std::cos(u), (1 + 0.3 * std::cos(v)) * std::sin(u),
+         0.3 * std::sin(v)};
+  }
+  return p;
+}
+
+/// n uniform points (seed) followed by `copies` exact copies of random ones among them.
+inline Input with_duplicates(std::size_t n, std::uint64_t seed, int copies) {
+  Input in{uniform_points(n, seed), {}};
+  Random r(seed + 1);
+  for (int i = 0; i < copies; ++i) {
+    const int which = r.integer(0, static_cast<int>(n) - 1);
+    in.points.push_back(in.points[static_cast<std::size_t>(which)]);
+  }
+  return in;
 }
 
 using CellKey = std::array<std::uint32_t, 4>;

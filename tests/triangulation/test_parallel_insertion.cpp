@@ -1,15 +1,15 @@
 // Parallel insertion (TriangulationOptions::threads > 1), with fixed borders and with
 // vertex locks: the triangulation is the same as the sequential one (same finite cells,
-// hidden points and duplicates), valid, built mostly by the parallel passes; with fixed
-// borders the cell ids do not depend on timing, and in the canonical order
-// (TriangulationOptions::canonical_order) the cell array is the same for every thread
-// count and every run.
+// hidden points and duplicates) and valid; with fixed borders the cell ids do not depend on
+// timing, and in the canonical order (TriangulationOptions::canonical_order) the cell array
+// is the same for every thread count and every run. Nothing here depends on timing, so it
+// runs beside other tests; that the passes insert most points themselves with vertex locks
+// (which does depend on the workers having the cores) is test_parallel_workload's.
 #include <rapidcheck/catch.h>
 
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <numbers>
 
 #include "generators.hpp"
 #include "rstruct/triangulation/regular_triangulation_3.hpp"
@@ -22,6 +22,8 @@ using rstruct::triangulation::RegularTriangulation3;
 using rstruct::triangulation::TriangulationOptions;
 
 using rstruct::test::Input;
+using rstruct::test::torus_points;
+using rstruct::test::with_duplicates;
 
 using Scheme = TriangulationOptions::ParallelScheme;
 
@@ -78,9 +80,8 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicate_pairs(const Regul
   return pairs;
 }
 
-/// Compares the parallel construction with the sequential one; `busy`: the parallel passes
-/// must have inserted most points themselves.
-void check_same(const Input& in, unsigned threads, std::size_t min_round, bool busy) {
+/// Compares the parallel construction with the sequential one.
+void check_same(const Input& in, unsigned threads, std::size_t min_round) {
   const RegularTriangulation3 one = build(in, 1, min_round);
   const RegularTriangulation3 many = build(in, threads, min_round);
   const auto report = many.is_valid();
@@ -93,55 +94,26 @@ void check_same(const Input& in, unsigned threads, std::size_t min_round, bool b
   CHECK(duplicate_pairs(many) == duplicate_pairs(one));
   const auto& s = many.stats();
   CHECK(s.threads == std::min(threads, 8u));
-  CHECK(s.parallel_points > 0);
-  if (busy) {
-    // The passes took most of the points and inserted two thirds of those themselves at
-    // least (40,000 uniform points, three workers: 6 % deferred after both passes).
-    CHECK(s.parallel_points > in.points.size() / 2);
-    CHECK(s.deferred_points * 3 < s.parallel_points);
-  }
-}
-
-std::vector<Point3> torus_points(std::size_t n, std::uint64_t seed) {
-  rstruct::test::Random r(seed);
-  std::vector<Point3> p(n);
-  for (Point3& q : p) {
-    const double u = 2 * std::numbers::pi * r.uniform();
-    const double v = 2 * std::numbers::pi * r.uniform();
-    q = {(1 + 0.3 * std::cos(v)) * std::cos(u), (1 + 0.3 * std::cos(v)) * std::sin(u),
-         0.3 * std::sin(v)};
-  }
-  return p;
-}
-
-/// n uniform points (seed) followed by `copies` exact copies of random ones among them.
-Input with_duplicates(std::size_t n, std::uint64_t seed, int copies) {
-  Input in{rstruct::test::uniform_points(n, seed), {}};
-  rstruct::test::Random r(seed + 1);
-  for (int i = 0; i < copies; ++i) {
-    const int which = r.integer(0, static_cast<int>(n) - 1);
-    in.points.push_back(in.points[static_cast<std::size_t>(which)]);
-  }
-  return in;
+  CHECK(s.parallel_points > 0);  // (how many, with locks, depends on timing)
 }
 
 }  // namespace
 
 TEST_CASE("parallel insertion: uniform points, two and three threads") {
   const Input in{rstruct::test::uniform_points(40000, 11), {}};
-  check_same(in, 2, 2000, true);
-  check_same(in, 3, 2000, true);
+  check_same(in, 2, 2000);
+  check_same(in, 3, 2000);
 }
 
 TEST_CASE("parallel insertion: a grid (cospherical everywhere)") {
-  check_same({rstruct::test::grid_points(32, 32, 32), {}}, 2, 2000, true);
+  check_same({rstruct::test::grid_points(32, 32, 32), {}}, 2, 2000);
 }
 
 TEST_CASE("parallel insertion: points on a torus surface") {
   // Long cells cross the workers' borders: after the first large pass the construction
   // takes vertex locks (see builder.cpp), and then the passes insert most points.
   const Input in{torus_points(30000, 5), {}};
-  check_same(in, 2, 2000, true);
+  check_same(in, 2, 2000);
   // With fixed borders only, it turns sequential instead, which must still be right.
   const RegularTriangulation3 one = build(in, 1, 2000);
   const RegularTriangulation3 borders = build(in, 2, 2000, Scheme::borders);
@@ -154,8 +126,8 @@ TEST_CASE("parallel insertion with locks: weighted points on a surface, some hid
   Input in{torus_points(n, 12), rstruct::test::hiding_weights(n, 2e-3, 13)};
   const RegularTriangulation3 t = build(in, 2, 2000, Scheme::locks);
   CHECK(t.hidden_points().size() > 100);
-  check_same(in, 2, 2000, true);
-  check_same(in, 3, 2000, true);
+  check_same(in, 2, 2000);
+  check_same(in, 3, 2000);
 }
 
 TEST_CASE("parallel insertion with locks: uniform points, a grid, duplicates") {
@@ -169,7 +141,6 @@ TEST_CASE("parallel insertion with locks: uniform points, a grid, duplicates") {
     CHECK(cell_set(locks) == cell_set(one));
     CHECK(hidden_ids(locks) == hidden_ids(one));
     CHECK(duplicate_pairs(locks) == duplicate_pairs(one));
-    CHECK(locks.stats().deferred_points * 10 < locks.stats().parallel_points);
   }
 }
 
@@ -180,14 +151,14 @@ TEST_CASE("parallel insertion: weighted points, some hidden") {
            rstruct::test::hiding_weights(n, 2 * spacing * spacing, 4)};
   const RegularTriangulation3 t = build(in, 2, 2000);
   CHECK(t.hidden_points().size() > 100);  // the comparison below is not between empty sets
-  check_same(in, 2, 2000, true);
+  check_same(in, 2, 2000);
 }
 
 TEST_CASE("parallel insertion: exact duplicates") {
   const Input in = with_duplicates(30000, 8, 10000);
   const RegularTriangulation3 t = build(in, 2, 2000);
   CHECK(t.duplicate_points().size() >= 8000);
-  check_same(in, 2, 2000, true);
+  check_same(in, 2, 2000);
 }
 
 /// `in` triangulated with its last `shared` points inserted first and shared by the
@@ -218,15 +189,15 @@ TEST_CASE("points inserted first (bounding-box corners), shared by the workers")
   for (const Scheme scheme : {Scheme::automatic, Scheme::borders, Scheme::locks}) {
     for (const unsigned threads : {1u, 2u, 3u}) {
       const RegularTriangulation3 first = build_sharing(in, 8, threads, scheme, one);
-      if (threads > 1) {
+      if (threads > 1 && scheme == Scheme::borders) {
+        // With fixed borders the shares do not depend on timing (with locks they do: see
+        // test_parallel_workload). Every cell outside the torus has a corner: corners owned
+        // like the other points keep 13,108 of the 18,759 points of the parallel rounds out
+        // of the parallel passes on two workers, shared 9,317.
         CHECK(first.stats().parallel_points > in.points.size() / 2);
-        // Every cell outside the torus has a corner. With fixed borders (no timing),
-        // corners owned like the other points keep 13,108 of the 18,759 points of the
-        // parallel rounds out of the parallel passes on two workers, shared 9,317. (With
-        // locks the count depends on timing: a sanitizer's slowdown changes it.)
         const auto deferred = first.stats().deferred_points;
         const auto parallel = first.stats().parallel_points;
-        if (scheme == Scheme::borders && threads == 2) CHECK(deferred * 10 < parallel * 6);
+        if (threads == 2) CHECK(deferred * 10 < parallel * 6);
       }
     }
   }
@@ -253,7 +224,9 @@ TEST_CASE("many shared points: the workers keep out of the cells they would shar
   for (const Scheme scheme : {Scheme::borders, Scheme::locks}) {
     for (const unsigned threads : {2u, 3u}) {
       const RegularTriangulation3 t = build_sharing(in, 15000, threads, scheme, one);
-      CHECK(t.stats().parallel_points > (in.points.size() - 15000) / 2);
+      if (scheme == Scheme::borders) {  // (with locks: test_parallel_workload)
+        CHECK(t.stats().parallel_points > (in.points.size() - 15000) / 2);
+      }
     }
   }
 }

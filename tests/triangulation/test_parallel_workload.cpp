@@ -1,0 +1,86 @@
+// The parallel passes do the work: they take most of the points and insert most of those
+// themselves, leaving few to the sequential insertion after them. With vertex locks (points
+// on a surface) how many a worker defers depends on timing: a worker descheduled while it
+// holds locks makes the other defer the points that need them. So this test runs alone
+// (meson: is_parallel false) and only builds the parallel triangulations; that they equal the
+// sequential ones is test_parallel_insertion's.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "generators.hpp"
+#include "rstruct/triangulation/regular_triangulation_3.hpp"
+
+namespace {
+
+using rstruct::test::Input;
+using rstruct::test::torus_points;
+using rstruct::triangulation::TriangulationOptions;
+using rstruct::triangulation::TriangulationStats;
+
+using Scheme = TriangulationOptions::ParallelScheme;
+
+TriangulationStats parallel_stats(const Input& in, unsigned threads, Scheme scheme,
+                                  std::size_t insert_first = 0) {
+  TriangulationOptions options;
+  options.threads = threads;
+  options.parallel_min_round = 2000;
+  options.parallel_scheme = scheme;
+  options.insert_first = insert_first;
+  const auto t = rstruct::test::build(in, options);
+  const TriangulationStats s = t.stats();
+  INFO(in.points.size() << " points, " << threads << " threads, scheme "
+                        << static_cast<int>(scheme) << ": " << s.parallel_points
+                        << " to the passes, " << s.deferred_points << " deferred");
+  CHECK(s.threads == threads);
+  return s;
+}
+
+/// Most points went to the passes, which inserted `share` of them themselves at least.
+void check_busy(const Input& in, unsigned threads, Scheme scheme, double share) {
+  const TriangulationStats s = parallel_stats(in, threads, scheme);
+  CHECK(s.parallel_points > in.points.size() / 2);
+  CHECK(static_cast<double>(s.deferred_points) <
+        (1 - share) * static_cast<double>(s.parallel_points));
+}
+
+}  // namespace
+
+TEST_CASE("uniform points: fixed borders, two passes") {
+  // 40,000 points, three workers: 6 % deferred after both passes.
+  const Input in{rstruct::test::uniform_points(40000, 11), {}};
+  check_busy(in, 2, Scheme::automatic, 2.0 / 3);
+  check_busy(in, 3, Scheme::automatic, 2.0 / 3);
+}
+
+TEST_CASE("points on a torus: locks after the first large pass") {
+  const Input in{torus_points(30000, 5), {}};
+  check_busy(in, 2, Scheme::automatic, 2.0 / 3);
+  const std::size_t n = 30000;
+  const Input weighted{torus_points(n, 12), rstruct::test::hiding_weights(n, 2e-3, 13)};
+  check_busy(weighted, 2, Scheme::locks, 2.0 / 3);
+  check_busy(weighted, 3, Scheme::locks, 2.0 / 3);
+}
+
+TEST_CASE("locks in a volume: uniform points with duplicates, a grid") {
+  check_busy(rstruct::test::with_duplicates(30000, 14, 3000), 2, Scheme::locks, 0.9);
+  check_busy({rstruct::test::grid_points(24, 24, 24), {}}, 2, Scheme::locks, 0.9);
+}
+
+TEST_CASE("shared points inserted first, with locks") {
+  Input corners{torus_points(20000, 19), {}};
+  for (int k = 0; k < 8; ++k) {
+    corners.points.push_back({(k & 1) != 0 ? 4.0 : -4.0, (k & 2) != 0 ? 4.0 : -4.0,
+                              (k & 4) != 0 ? 4.0 : -4.0});
+  }
+  for (const unsigned threads : {2u, 3u}) {
+    for (const Scheme scheme : {Scheme::automatic, Scheme::locks}) {
+      CHECK(parallel_stats(corners, threads, scheme, 8).parallel_points >
+            corners.points.size() / 2);
+    }
+  }
+  const Input half{rstruct::test::uniform_points(30000, 21), {}};
+  for (const unsigned threads : {2u, 3u}) {
+    CHECK(parallel_stats(half, threads, Scheme::locks, 15000).parallel_points >
+          (half.points.size() - 15000) / 2);
+  }
+}
