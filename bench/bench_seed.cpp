@@ -14,6 +14,10 @@
 //
 //   bench_seed [--runs 3] [--torus N] [--levels RHO:SHRINK,...] [--cover-iterations N]
 //              [--cover-time 60] [--threads 0] [--no-nested] [--random-order]
+//              [--labels-first]
+//
+// With more than one thread the pole labels run beside level 1, as in `rstruct demo`;
+// --labels-first labels them in the shared stage instead (to compare the two).
 
 #include <algorithm>
 #include <cstdint>
@@ -21,12 +25,14 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "rstruct/complex/orthosphere_predicates.hpp"
 #include "rstruct/core/large_blocks.hpp"
+#include "rstruct/core/parallel.hpp"
 #include "rstruct/core/report.hpp"
 #include "rstruct/core/stopwatch.hpp"
 #include "rstruct/pipeline/seed_polytope.hpp"
@@ -148,6 +154,7 @@ int main(int argc, char** argv) {
   unsigned threads = 0;
   bool nested = true;
   bool random_order = false;
+  bool labels_first = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const auto next = [&]() -> const char* {
@@ -187,11 +194,13 @@ int main(int argc, char** argv) {
       nested = false;
     } else if (a == "--random-order") {
       random_order = true;
+    } else if (a == "--labels-first") {
+      labels_first = true;
     } else {
       std::fprintf(stderr,
                    "usage: bench_seed [--runs 3] [--torus N] [--levels RHO:SHRINK,...] "
                    "[--cover-iterations %lld] [--cover-time %g] [--threads 0] [--no-nested] "
-                   "[--random-order]\n"
+                   "[--random-order] [--labels-first]\n"
                    "  --cover-iterations: set-cover local-search iterations per stream "
                    "(deterministic; 0: stop on --cover-time only)\n"
                    "  --cover-time: set-cover wall-clock limit in seconds (a safety cap "
@@ -231,9 +240,15 @@ int main(int argc, char** argv) {
     Report pole_report;
     rstruct::poles::PoleAnalysisOptions pole_options;
     pole_options.threads = threads;
+    // As `rstruct demo`: with more than one thread the labels run beside level 1.
+    pole_options.label = labels_first || rstruct::thread_count(threads, 2) == 1;
     rstruct::predicates::reset_stage_counts();
-    const rstruct::poles::PoleAnalysis analysis =
+    rstruct::poles::PoleAnalysis analysis =
         rstruct::poles::analyse_poles(samples, pole_options, &pole_report);
+    std::optional<rstruct::poles::PendingLabels> pending;
+    if (!analysis.labelled) {
+      pending.emplace(analysis, samples, pole_options.labeling, &pole_report);
+    }
     poles.add(pole_report);
     print_stage_counts(run, "shared", rstruct::predicates::PredicateId::insphere);
     std::vector<std::uint32_t> previous_kept;
@@ -252,8 +267,8 @@ int main(int argc, char** argv) {
       Report report;
       rstruct::complex::reset_orthosphere_predicate_counters();
       rstruct::predicates::reset_stage_counts();
-      const auto seed =
-          rstruct::pipeline::compute_seed_polytope(samples, analysis, options, &report);
+      const auto seed = rstruct::pipeline::compute_seed_polytope(
+          samples, analysis, options, &report, pending ? &*pending : nullptr);
       level_times[l].add(report);
       previous_kept = seed.kept.size() == samples.size() ? std::vector<std::uint32_t>{}
                                                          : seed.kept;

@@ -9,11 +9,13 @@
 
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "cli/command.hpp"
 #include "cli/seed_run.hpp"
 #include "rstruct/core/error.hpp"
+#include "rstruct/core/parallel.hpp"
 #include "rstruct/io/mesh_io.hpp"
 #include "rstruct/poles/pole_analysis.hpp"
 #include "rstruct/sampling/sample_request.hpp"
@@ -102,14 +104,20 @@ class DemoCommand : public Command {
                  " samples in " + std::to_string(sample.seconds) + " s -> " + out_dir_ +
                  "/double_torus_samples.ply");
 
-    // Step 1 of every level, once: Delaunay, poles, labels, D̂.
+    // Step 1 of every level, once: Delaunay, poles, D̂, and the pole labels, which only the
+    // levels' final check reads: with more than one thread they run beside level 1.
     Report pole_report;
     poles::PoleAnalysisOptions pole_options;
     pole_options.threads = threads_;
-    const poles::PoleAnalysis analysis =
-        poles::analyse_poles(samples, pole_options, &pole_report);
+    pole_options.label = thread_count(threads_, 2) == 1;
+    poles::PoleAnalysis analysis = poles::analyse_poles(samples, pole_options, &pole_report);
+    std::optional<poles::PendingLabels> pending;
+    if (!analysis.labelled) {
+      pending.emplace(analysis, samples, pole_options.labeling, &pole_report);
+    }
     if (!context.quiet) {
-      std::cerr << "\nshared by every level: Delaunay, poles, labels, pole distance\n";
+      std::cerr << "\nshared by every level: Delaunay, poles, pole distance"
+                << (pending ? " (the pole labels run beside level 1)\n" : ", labels\n");
       pole_report.print_stages(std::cerr);
     }
 
@@ -136,7 +144,7 @@ class DemoCommand : public Command {
             << options.rho_tilde << "  -> " << outputs.mesh;
       const pipeline::SeedPolytope seed = run_seed(samples, options, outputs, context,
                                                    level_report, title.str(), &analysis,
-                                                   &pole_report);
+                                                   &pole_report, pending ? &*pending : nullptr);
       previous_kept = seed.kept;
       previous_shrink = options.rho_tilde;
       if (previous_kept.size() == samples.size()) previous_kept.clear();

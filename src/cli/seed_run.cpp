@@ -92,10 +92,11 @@ pipeline::SeedPolytope run_seed(const std::vector<Point3>& samples,
                                 const pipeline::SeedOptions& options,
                                 const SeedOutputs& outputs, Context& context, Report& report,
                                 const std::string& title, const poles::PoleAnalysis* shared,
-                                const Report* shared_report) {
+                                const Report* shared_report, poles::PendingLabels* pending) {
   pipeline::SeedPolytope seed =
-      shared != nullptr ? pipeline::compute_seed_polytope(samples, *shared, options, &report)
-                        : pipeline::compute_seed_polytope(samples, options, &report);
+      shared != nullptr
+          ? pipeline::compute_seed_polytope(samples, *shared, options, &report, pending)
+          : pipeline::compute_seed_polytope(samples, options, &report);
   for (const std::string& w : seed.warnings) context.warn(w);
   {
     Report::Stage stage(report, "output");
@@ -157,10 +158,14 @@ pipeline::SeedPolytope run_seed(const std::vector<Point3>& samples,
   }
 
   if (!context.quiet) {
-    const std::initializer_list<const char*> pole_stages = {"delaunay", "poles",
-                                                            "labels + pole distance"};
+    const std::initializer_list<const char*> pole_stages = {
+        "delaunay", "poles", "labels + pole distance", "pole distance"};
     const Seconds dp = stage_sum(shared_report != nullptr ? *shared_report : report,
                                  pole_stages);
+    // The labels computed beside the level: the time the level waited for them at its end.
+    const Seconds lw = stage_sum(report, {"labels (wait)"});
+    bool labels_beside = false;
+    for (const auto& stage : report.stages()) labels_beside |= stage.first == "labels (wait)";
     const Seconds sb = stage_sum(report, {"surface balls"});
     const Seconds pr = stage_sum(report, {"covering sets", "set cover"});
     const Seconds al = stage_sum(report, {"regular triangulation", "vertex stars",
@@ -197,10 +202,12 @@ pipeline::SeedPolytope run_seed(const std::vector<Point3>& samples,
     std::cerr << line;
     print_row("weighted alpha-shape", al);
     print_row("output + sample map", out);
+    if (labels_beside) print_row("pole labels (waited for)", lw);
     Seconds level = sb;
     level += pr;
     level += al;
     level += out;
+    level += lw;
     print_row(shared != nullptr ? "level total (poles shared)" : "total",
               shared != nullptr ? level : (level += dp));
     std::cerr << "  dual complex K: " << seed.k_counts[0] << " vertices, " << seed.k_counts[1]

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -169,6 +170,20 @@ void map_samples(std::span<const Point3> samples, const RegularTriangulation3& r
   for (std::size_t k = 0; k < pending.size(); ++k) out.sample_vertex[pending[k]] = vertex[k];
 }
 
+/// The labelling's counts into `out`; a labelling that is not clean is an error with
+/// require_clean_labels, a warning otherwise.
+void check_labels(const poles::LabelingStats& labeling, const SeedOptions& options,
+                  SeedPolytope& out) {
+  out.labeling = labeling;
+  if (labeling.is_clean()) return;
+  std::ostringstream msg;
+  msg << "pole labeling is not clean (" << labeling.unlabelled << " unlabelled, "
+      << labeling.contradictory << " contradictory poles): is the input an "
+      << "r-sample of a closed surface?";
+  if (options.require_clean_labels) throw ComputationFailed(msg.str());
+  out.warnings.push_back(msg.str());
+}
+
 /// Flips every triangle if the (orientable, closed) surface encloses negative volume.
 void orient_outward(std::vector<std::array<std::uint32_t, 3>>& triangles,
                     std::span<const Point3> vertices) {
@@ -218,8 +233,15 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples, const SeedOp
   }
   poles::PoleAnalysisOptions pole_options = options.poles;
   if (pole_options.threads == 0) pole_options.threads = options.threads;
-  const poles::PoleAnalysis analysis = poles::analyse_poles(sorted, pole_options, &rep);
-  SeedPolytope out = compute_seed_polytope(sorted, analysis, sorted_options, &rep);
+  // With more than one thread the labels are computed beside the level (they are only
+  // checked at its end); with one, before it, as analyse_poles does by default.
+  const bool beside = thread_count(options.threads, 2) > 1;
+  pole_options.label = !beside;
+  poles::PoleAnalysis analysis = poles::analyse_poles(sorted, pole_options, &rep);
+  std::optional<poles::PendingLabels> pending;
+  if (beside) pending.emplace(analysis, sorted, pole_options.labeling, &rep);
+  SeedPolytope out = compute_seed_polytope(sorted, analysis, sorted_options, &rep,
+                                           pending ? &*pending : nullptr);
 
   const auto to_caller = [&](std::vector<std::uint32_t>& ids, bool sort) {
     for (std::uint32_t& id : ids) id = order[id];
@@ -240,7 +262,8 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples, const SeedOp
 
 SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
                                    const poles::PoleAnalysis& analysis,
-                                   const SeedOptions& options, Report* report) {
+                                   const SeedOptions& options, Report* report,
+                                   poles::PendingLabels* pending) {
   SeedPolytope out;
   check_options(options, out);
   if (analysis.dhat.distance.size() != samples.size()) {
@@ -252,14 +275,13 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
   Report scratch;
   Report& rep = report ? *report : scratch;
 
-  out.labeling = analysis.labeling;
-  if (!analysis.labeling.is_clean()) {
-    std::ostringstream msg;
-    msg << "pole labeling is not clean (" << analysis.labeling.unlabelled << " unlabelled, "
-        << analysis.labeling.contradictory << " contradictory poles): is the input an "
-        << "r-sample of a closed surface?";
-    if (options.require_clean_labels) throw ComputationFailed(msg.str());
-    out.warnings.push_back(msg.str());
+  // Read once: pending->wait() sets it at the end.
+  const bool labels_pending = !analysis.labelled;
+  if (!labels_pending) {
+    check_labels(analysis.labeling, options, out);  // before the expensive stages
+  } else if (pending == nullptr) {
+    throw InvalidInput("seed polytope: the pole analysis is not labelled and no pending "
+                       "labelling was given");
   }
   out.dhat = analysis.dhat.distance;
 
@@ -394,6 +416,12 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
   for (std::uint32_t b = 0; b < ball_sample.size(); ++b) ball_of_sample[ball_sample[b]] = b;
   map_samples(samples, rt, stars, ball_of_sample, output_vertex_of_ball, options.threads, out);
   map_stage.finish();
+  if (labels_pending) {
+    Report::Stage wait_stage(rep, "labels (wait)");
+    const poles::LabelingStats& labeling = pending->wait();
+    wait_stage.finish();
+    check_labels(labeling, options, out);
+  }
   return out;
 }
 

@@ -8,6 +8,7 @@
 
 #include "rstruct/core/error.hpp"
 #include "rstruct/core/parallel.hpp"
+#include "rstruct/core/stopwatch.hpp"
 #include "rstruct/triangulation/regular_triangulation_3.hpp"
 
 namespace rstruct::poles {
@@ -101,13 +102,8 @@ Soup soup_of(const triangulation::RegularTriangulation3& dt, std::size_t sample_
   return soup;
 }
 
-void record(Report& report, const PoleAnalysis& analysis) {
+void record_labels(Report& report, const LabelingStats& l) {
   auto& j = report.data()["poles"];
-  j["samples"] = analysis.poles.sample_count;
-  j["duplicate_samples"] = analysis.duplicate_samples;
-  j["tetrahedra"] = analysis.tetrahedra;
-  j["poles"] = analysis.poles.size();
-  const LabelingStats& l = analysis.labeling;
   j["inner"] = l.inner;
   j["outer"] = l.outer;
   j["unlabelled"] = l.unlabelled;
@@ -116,6 +112,16 @@ void record(Report& report, const PoleAnalysis& analysis) {
   j["inconsistent_samples"] = l.inconsistent_samples;
   j["samples_without_inner_pole"] = l.samples_without_inner;
   j["label_pairs_examined"] = l.pairs_examined;
+}
+
+void record(Report& report, const PoleAnalysis& analysis) {
+  auto& j = report.data()["poles"];
+  j["samples"] = analysis.poles.sample_count;
+  j["duplicate_samples"] = analysis.duplicate_samples;
+  j["tetrahedra"] = analysis.tetrahedra;
+  j["poles"] = analysis.poles.size();
+  j["labelled"] = analysis.labelled;
+  if (analysis.labelled) record_labels(report, analysis.labeling);
 }
 
 }  // namespace
@@ -141,6 +147,7 @@ PoleAnalysis analyse_poles(std::span<const Point3> samples, const PoleAnalysisOp
                            Report* report) {
   Report local;
   Report& r = report != nullptr ? *report : local;
+  check_labeling_parameters(options.labeling);  // before the expensive steps
   PoleAnalysis analysis;
   std::vector<Point3> sites(samples.begin(), samples.end());
   const std::vector<Point3> box = bounding_box_sites(samples, options.box_scale);
@@ -164,7 +171,7 @@ PoleAnalysis analyse_poles(std::span<const Point3> samples, const PoleAnalysisOp
         compute_poles({sites, samples.size(), soup.tets, soup.representative}, options.threads);
   }
   soup = Soup{};
-  {
+  if (options.label) {
     // The labelling (sequential) and D̂ are independent: the labels write PoleSet::label,
     // D̂ reads the centres and sample_poles. The labelling runs on one thread beside the
     // D̂ queries, and that thread takes queries too once it is done; one stage, since they
@@ -173,9 +180,58 @@ PoleAnalysis analyse_poles(std::span<const Point3> samples, const PoleAnalysisOp
     analysis.dhat = pole_distance_beside(samples, analysis.poles, options.threads, [&] {
       analysis.labeling = label_poles(analysis.poles, samples, options.labeling);
     });
+    analysis.labelled = true;
+  } else {
+    Report::Stage stage(r, "pole distance");
+    analysis.poles.label.assign(analysis.poles.size(), PoleLabel::unlabelled);
+    analysis.dhat = pole_distance(samples, analysis.poles, options.threads);
   }
   if (report != nullptr) record(*report, analysis);
   return analysis;
+}
+
+PendingLabels::PendingLabels(PoleAnalysis& analysis, std::span<const Point3> samples,
+                             const LabelingParameters& parameters, Report* report)
+    : analysis_(&analysis), report_(report) {
+  if (analysis.labelled) throw InvalidInput("pending labels: the pole analysis is labelled");
+  if (samples.size() != analysis.poles.sample_count) {
+    throw InvalidInput("pending labels: " + std::to_string(samples.size()) +
+                       " samples given for a pole analysis of " +
+                       std::to_string(analysis.poles.sample_count));
+  }
+  check_labeling_parameters(parameters);
+  // The thread touches only analysis.poles (label_poles writes its labels and reads the
+  // rest) and this object's stats_, seconds_ and error_; wait() reads those after join().
+  thread_ = std::thread([this, samples, parameters] {
+    try {
+      const Stopwatch clock;
+      stats_ = label_poles(analysis_->poles, samples, parameters);
+      seconds_ = clock.seconds();
+    } catch (...) {
+      error_ = std::current_exception();
+    }
+  });
+}
+
+PendingLabels::~PendingLabels() {
+  if (thread_.joinable()) thread_.join();
+}
+
+const LabelingStats& PendingLabels::wait() {
+  if (thread_.joinable()) {
+    thread_.join();
+    if (error_) std::rethrow_exception(error_);
+    analysis_->labeling = stats_;
+    analysis_->labelled = true;
+    if (report_ != nullptr) {
+      record_labels(*report_, stats_);
+      report_->data()["poles"]["labelled"] = true;
+      report_->data()["poles"]["labels_seconds"] = seconds_;
+    }
+  } else if (error_) {
+    std::rethrow_exception(error_);
+  }
+  return stats_;
 }
 
 }  // namespace rstruct::poles

@@ -163,10 +163,14 @@ void count(const PoleSet& poles, const Labeler& labeler, LabelingStats& stats) {
 
 }  // namespace
 
-LabelingStats label_poles(PoleSet& poles, std::span<const Point3> samples,
-                          const LabelingParameters& parameters) {
+void check_labeling_parameters(const LabelingParameters& parameters) {
   check_threshold(parameters.same_min_cos, "same_min_cos");
   check_threshold(parameters.opposite_min_cos, "opposite_min_cos");
+}
+
+LabelingStats label_poles(PoleSet& poles, std::span<const Point3> samples,
+                          const LabelingParameters& parameters) {
+  check_labeling_parameters(parameters);
   if (samples.size() != poles.sample_count) {
     throw InvalidInput("pole labeling: " + std::to_string(samples.size()) +
                        " samples given for a pole set of " +

@@ -124,6 +124,94 @@ TEST_CASE("absurd parameters are rejected, unguaranteed ones are warned about") 
   CHECK(seed.warnings.size() == 2);
 }
 
+namespace {
+bool has_stage(const rstruct::Report& report, const std::string& name) {
+  for (const auto& stage : report.stages()) {
+    if (stage.first == name) return true;
+  }
+  return false;
+}
+}  // namespace
+
+TEST_CASE("the pole labels run beside the level: the same result, checked at the end") {
+  const auto samples = certified_sample("torus", 0.15, 5, true);
+  SeedOptions options;
+  options.rho = 0.4;
+  options.rho_tilde = 0;
+  options.threads = 1;  // labels first
+  rstruct::Report first_report;
+  const SeedPolytope first =
+      rstruct::pipeline::compute_seed_polytope(samples, options, &first_report);
+  CHECK(has_stage(first_report, "labels + pole distance"));
+  CHECK_FALSE(has_stage(first_report, "labels (wait)"));
+  options.threads = 2;  // labels beside the level
+  rstruct::Report beside_report;
+  const SeedPolytope beside =
+      rstruct::pipeline::compute_seed_polytope(samples, options, &beside_report);
+  CHECK(has_stage(beside_report, "pole distance"));
+  CHECK(has_stage(beside_report, "labels (wait)"));
+  CHECK_FALSE(has_stage(beside_report, "labels + pole distance"));
+  CHECK(beside_report.data()["poles"]["inner"] == first_report.data()["poles"]["inner"]);
+  check_same_output(beside, first);
+  CHECK(beside.labeling.is_clean());
+  CHECK(beside.labeling.inner == first.labeling.inner);
+  CHECK(beside.labeling.inner > 0);
+  CHECK(beside.warnings == first.warnings);
+
+  // A shared analysis without labels: the first level needs its PendingLabels.
+  rstruct::poles::PoleAnalysisOptions later;
+  later.label = false;
+  rstruct::poles::PoleAnalysis analysis = rstruct::poles::analyse_poles(samples, later);
+  CHECK_THROWS_WITH(rstruct::pipeline::compute_seed_polytope(samples, analysis, options),
+                    Catch::Contains("not labelled"));
+  rstruct::poles::PendingLabels pending(analysis, samples);
+  rstruct::Report level_report;
+  check_same_output(rstruct::pipeline::compute_seed_polytope(samples, analysis, options,
+                                                             &level_report, &pending),
+                    first);
+  CHECK(has_stage(level_report, "labels (wait)"));
+  CHECK(analysis.labelled);
+  CHECK(analysis.labeling.inner == first.labeling.inner);
+  // Later levels check the labels first, with or without the (finished) pending labels.
+  rstruct::Report second_report;
+  const SeedPolytope second =
+      rstruct::pipeline::compute_seed_polytope(samples, analysis, options, &second_report);
+  check_same_output(second, first);
+  CHECK(second.labeling.inner == first.labeling.inner);
+  CHECK_FALSE(has_stage(second_report, "labels (wait)"));
+}
+
+TEST_CASE("a labelling that is not clean: a warning, or with require_clean_labels an error") {
+  // Points filling a cube are no r-sample of a closed surface: poles with contradictory
+  // evidence. Labelled first (one thread) or beside the level (two), the same verdict.
+  std::vector<rstruct::Point3> cube;
+  std::uint64_t state = 12345;
+  const auto next = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) * 0x1.0p-53;
+  };
+  for (int i = 0; i < 3000; ++i) cube.push_back({next(), next(), next()});
+  SeedOptions options;
+  options.rho = 0.4;
+  options.rho_tilde = 0;
+  std::vector<std::string> warnings[2];
+  for (const unsigned threads : {1u, 2u}) {
+    options.threads = threads;
+    options.require_clean_labels = false;
+    const SeedPolytope seed = rstruct::pipeline::compute_seed_polytope(cube, options);
+    CHECK_FALSE(seed.labeling.is_clean());
+    REQUIRE_FALSE(seed.warnings.empty());
+    CHECK_THAT(seed.warnings.back(), Catch::Contains("not clean"));
+    warnings[threads - 1] = seed.warnings;
+    options.require_clean_labels = true;
+    CHECK_THROWS_AS(rstruct::pipeline::compute_seed_polytope(cube, options),
+                    rstruct::ComputationFailed);
+  }
+  std::sort(warnings[0].begin(), warnings[0].end());
+  std::sort(warnings[1].begin(), warnings[1].end());
+  CHECK(warnings[0] == warnings[1]);
+}
+
 TEST_CASE("levels share one pole analysis; results do not depend on it or on threads") {
   const auto samples = certified_sample("torus", 0.15, 5, true);
   // Unpruned, so that nothing depends on the set-cover solver's time limit.

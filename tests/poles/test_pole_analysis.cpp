@@ -207,6 +207,61 @@ TEST_CASE("labels and D̂ are the same whether they run side by side or one afte
   CHECK(sequential.labeling.outer > 0);
 }
 
+TEST_CASE("labels left for later: PendingLabels gives what analyse_poles would have") {
+  const std::vector<Point3> samples = torus_samples(3000, 7);
+  const auto labelled = analyse_poles(samples);
+  REQUIRE(labelled.labelled);
+  PoleAnalysisOptions later;
+  later.label = false;
+  rstruct::Report report;
+  auto a = analyse_poles(samples, later, &report);
+  CHECK_FALSE(a.labelled);
+  CHECK(report.stages().back().first == "pole distance");
+  CHECK(report.data()["poles"]["labelled"] == false);
+  CHECK_FALSE(report.data()["poles"].contains("inner"));
+  CHECK(a.poles.label ==
+        std::vector<PoleLabel>(a.poles.size(), PoleLabel::unlabelled));
+  CHECK(a.dhat.distance == labelled.dhat.distance);
+  CHECK(a.dhat.nearest == labelled.dhat.nearest);
+  {
+    rstruct::poles::PendingLabels pending(a, samples, {}, &report);
+    // The caller goes on meanwhile with what the labelling does not touch.
+    double sum = 0;
+    for (const double d : a.dhat.distance) sum += d;
+    CHECK(sum > 0);
+    const rstruct::poles::LabelingStats& stats = pending.wait();
+    CHECK(&pending.wait() == &stats);  // a second wait returns at once, the same counts
+    CHECK(stats.inner == labelled.labeling.inner);
+    CHECK(stats.outer == labelled.labeling.outer);
+    CHECK(stats.pairs_examined == labelled.labeling.pairs_examined);
+  }
+  CHECK(a.labelled);
+  CHECK(a.poles.label == labelled.poles.label);
+  CHECK(a.labeling.inner == labelled.labeling.inner);
+  CHECK(a.labeling.contradictory == labelled.labeling.contradictory);
+  CHECK(report.data()["poles"]["labelled"] == true);
+  CHECK(report.data()["poles"]["inner"] == labelled.labeling.inner);
+  CHECK(report.data()["poles"]["unlabelled"] == labelled.labeling.unlabelled);
+  CHECK(report.data()["poles"]["labels_seconds"].get<double>() > 0);
+  // Both sides were labelled (the comparisons are not between two empty runs).
+  CHECK(labelled.labeling.inner > 0);
+  CHECK(labelled.labeling.outer > 0);
+  // Misuse: labelling twice, the wrong samples, bad thresholds (checked before the
+  // expensive steps even when the labels come later).
+  CHECK_THROWS_AS(rstruct::poles::PendingLabels(a, samples), rstruct::InvalidInput);
+  auto b = analyse_poles(samples, later);
+  const std::vector<Point3> fewer(samples.begin(), samples.end() - 1);
+  CHECK_THROWS_AS(rstruct::poles::PendingLabels(b, fewer), rstruct::InvalidInput);
+  rstruct::poles::LabelingParameters bad;
+  bad.same_min_cos = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_AS(rstruct::poles::PendingLabels(b, samples, bad), rstruct::InvalidInput);
+  later.labeling = bad;
+  CHECK_THROWS_WITH(analyse_poles(samples, later), Catch::Contains("same_min_cos"));
+  // Destroyed without wait(): joins, and the analysis stays unlabelled.
+  { rstruct::poles::PendingLabels unwaited(b, samples); }
+  CHECK_FALSE(b.labelled);
+}
+
 TEST_CASE("the pole analysis does not depend on the threads of its Delaunay triangulation") {
   // 24,000 samples: BRIO rounds large enough for the parallel passes, which on a surface
   // turn to vertex locks, so the cell ids (and the soup's order) depend on timing. Poles,

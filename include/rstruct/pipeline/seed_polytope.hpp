@@ -49,6 +49,8 @@ struct SeedOptions {
   double rho = 0.5;        ///< surface-ball factor ρ
   double rho_tilde = 0.03; ///< shrunk-ball factor ρ̃ (0: no pruning)
   PruneOptions prune;
+  /// For the pole analysis of compute_seed_polytope(samples, options); its `label` is not
+  /// used (the labels run beside the level when there is more than one thread).
   poles::PoleAnalysisOptions poles;
   /// Refuse to continue when the pole labeling is not clean (unlabelled or contradictory
   /// poles): D̂ uses poles of both labels, so labels do not enter the seed polytope, but
@@ -92,9 +94,11 @@ struct SeedPolytope {
 };
 
 /// Runs the pipeline. Stage seconds (wall and CPU) go to `report` (Table 1 breakdown:
-/// "delaunay", "poles", "labels", "pole distance", "surface balls", "covering sets",
-/// "set cover", "regular triangulation", "vertex stars", "dual complex", "collapse",
-/// "homology", "sample map").
+/// "delaunay", "poles", "pole distance", "surface balls", "covering sets", "set cover",
+/// "regular triangulation", "vertex stars", "dual complex", "collapse + homology",
+/// "sample map", "labels (wait)"). The pole labels, which only the final check reads, are
+/// computed on one more thread beside the stages after "pole distance" (see
+/// PendingLabels); "labels (wait)" is the time the pipeline waited for them at the end.
 /// \throws InvalidInput for bad parameters (NaN, negative, ρ̃ ≥ ρ, ρ > 1, candidates out of
 /// range or not increasing) or inputs that the poles stage rejects; ComputationFailed if
 /// require_clean_labels and the labeling is not clean, or if some sample is covered by no
@@ -104,10 +108,17 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples, const SeedOp
 
 /// The same from a PoleAnalysis of `samples` computed beforehand (options.poles is then
 /// not used): levels of detail share the Delaunay triangulation, poles and D̂.
+/// If the analysis was made without labels (PoleAnalysisOptions::label false), `pending`
+/// must be the PendingLabels labelling it: the level runs beside the labelling, waits for
+/// it at the end (stage "labels (wait)") and checks the labels then; the analysis is
+/// labelled afterwards, so later levels need no `pending` (with a labelled analysis the
+/// labels are checked first and `pending` is not used).
 /// \pre `analysis` = poles::analyse_poles(samples, ...).
-/// \throws as above; InvalidInput if the analysis has a different number of samples.
+/// \throws as above; InvalidInput if the analysis has a different number of samples, or is
+/// unlabelled and `pending` is null.
 SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
                                    const poles::PoleAnalysis& analysis,
-                                   const SeedOptions& options, Report* report = nullptr);
+                                   const SeedOptions& options, Report* report = nullptr,
+                                   poles::PendingLabels* pending = nullptr);
 
 }  // namespace rstruct::pipeline

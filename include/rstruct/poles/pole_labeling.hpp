@@ -59,6 +59,10 @@ struct LabelingStats {
   }
 };
 
+/// \throws InvalidInput if a threshold is NaN or outside [−1, 1] (label_poles checks this
+/// first; callers that label later check it before their expensive stages).
+void check_labeling_parameters(const LabelingParameters& parameters);
+
 /// Labels `poles` in place (poles.label) and returns the counts.
 /// \throws InvalidInput if a threshold is NaN or outside [−1, 1].
 LabelingStats label_poles(PoleSet& poles, std::span<const Point3> samples,
