@@ -279,9 +279,10 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
   const bool labels_pending = !analysis.labelled;
   if (!labels_pending) {
     check_labels(analysis.labeling, options, out);  // before the expensive stages
-  } else if (pending == nullptr) {
-    throw InvalidInput("seed polytope: the pole analysis is not labelled and no pending "
-                       "labelling was given");
+  } else if (pending == nullptr || &pending->analysis() != &analysis) {
+    throw InvalidInput(std::string("seed polytope: the pole analysis is not labelled and ") +
+                       (pending == nullptr ? "no pending labelling was given"
+                                           : "the pending labelling is another analysis's"));
   }
   out.dhat = analysis.dhat.distance;
 

@@ -165,6 +165,12 @@ TEST_CASE("the pole labels run beside the level: the same result, checked at the
   CHECK_THROWS_WITH(rstruct::pipeline::compute_seed_polytope(samples, analysis, options),
                     Catch::Contains("not labelled"));
   rstruct::poles::PendingLabels pending(analysis, samples);
+  {
+    rstruct::poles::PoleAnalysis other = rstruct::poles::analyse_poles(samples, later);
+    CHECK_THROWS_WITH(
+        rstruct::pipeline::compute_seed_polytope(samples, other, options, nullptr, &pending),
+        Catch::Contains("another analysis"));
+  }
   rstruct::Report level_report;
   check_same_output(rstruct::pipeline::compute_seed_polytope(samples, analysis, options,
                                                              &level_report, &pending),

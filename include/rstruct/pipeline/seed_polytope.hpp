@@ -115,7 +115,7 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples, const SeedOp
 /// labels are checked first and `pending` is not used).
 /// \pre `analysis` = poles::analyse_poles(samples, ...).
 /// \throws as above; InvalidInput if the analysis has a different number of samples, or is
-/// unlabelled and `pending` is null.
+/// unlabelled and `pending` is null or labels another analysis.
 SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
                                    const poles::PoleAnalysis& analysis,
                                    const SeedOptions& options, Report* report = nullptr,
