@@ -132,6 +132,18 @@ inline std::vector<Point3> torus_points(std::size_t n, std::uint64_t seed) {
   return p;
 }
 
+/// 20,000 torus points (seed 19) followed by the 8 corners of the cube [-4, 4]^3, which the
+/// parallel-insertion tests insert first (TriangulationOptions::insert_first = 8), as the
+/// pole analysis does with its box sites.
+inline Input torus_with_box_corners() {
+  Input in{torus_points(20000, 19), {}};
+  for (int k = 0; k < 8; ++k) {
+    in.points.push_back({(k & 1) != 0 ? 4.0 : -4.0, (k & 2) != 0 ? 4.0 : -4.0,
+                         (k & 4) != 0 ? 4.0 : -4.0});
+  }
+  return in;
+}
+
 /// n uniform points (seed) followed by `copies` exact copies of random ones among them.
 inline Input with_duplicates(std::size_t n, std::uint64_t seed, int copies) {
   Input in{uniform_points(n, seed), {}};

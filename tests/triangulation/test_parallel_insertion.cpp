@@ -180,11 +180,7 @@ RegularTriangulation3 build_sharing(const Input& in, std::size_t shared, unsigne
 }
 
 TEST_CASE("points inserted first (bounding-box corners), shared by the workers") {
-  Input in{torus_points(20000, 19), {}};
-  for (int k = 0; k < 8; ++k) {
-    in.points.push_back({(k & 1) != 0 ? 4.0 : -4.0, (k & 2) != 0 ? 4.0 : -4.0,
-                         (k & 4) != 0 ? 4.0 : -4.0});
-  }
+  const Input in = rstruct::test::torus_with_box_corners();
   const RegularTriangulation3 one = build(in, 1, 2000);
   for (const Scheme scheme : {Scheme::automatic, Scheme::borders, Scheme::locks}) {
     for (const unsigned threads : {1u, 2u, 3u}) {

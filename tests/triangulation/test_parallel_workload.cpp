@@ -67,11 +67,7 @@ TEST_CASE("locks in a volume: uniform points with duplicates, a grid") {
 }
 
 TEST_CASE("shared points inserted first, with locks") {
-  Input corners{torus_points(20000, 19), {}};
-  for (int k = 0; k < 8; ++k) {
-    corners.points.push_back({(k & 1) != 0 ? 4.0 : -4.0, (k & 2) != 0 ? 4.0 : -4.0,
-                              (k & 4) != 0 ? 4.0 : -4.0});
-  }
+  const Input corners = rstruct::test::torus_with_box_corners();
   for (const unsigned threads : {2u, 3u}) {
     for (const Scheme scheme : {Scheme::automatic, Scheme::locks}) {
       CHECK(parallel_stats(corners, threads, scheme, 8).parallel_points >
