@@ -32,7 +32,6 @@
 
 #include "rstruct/complex/orthosphere_predicates.hpp"
 #include "rstruct/core/large_blocks.hpp"
-#include "rstruct/core/parallel.hpp"
 #include "rstruct/core/report.hpp"
 #include "rstruct/core/stopwatch.hpp"
 #include "rstruct/pipeline/seed_polytope.hpp"
@@ -241,7 +240,7 @@ int main(int argc, char** argv) {
     rstruct::poles::PoleAnalysisOptions pole_options;
     pole_options.threads = threads;
     // As `rstruct demo`: with more than one thread the labels run beside level 1.
-    pole_options.label = labels_first || rstruct::thread_count(threads, 2) == 1;
+    pole_options.label = labels_first || !rstruct::poles::label_beside(threads);
     rstruct::predicates::reset_stage_counts();
     rstruct::poles::PoleAnalysis analysis =
         rstruct::poles::analyse_poles(samples, pole_options, &pole_report);

@@ -15,7 +15,6 @@
 #include "cli/command.hpp"
 #include "cli/seed_run.hpp"
 #include "rstruct/core/error.hpp"
-#include "rstruct/core/parallel.hpp"
 #include "rstruct/io/mesh_io.hpp"
 #include "rstruct/poles/pole_analysis.hpp"
 #include "rstruct/sampling/sample_request.hpp"
@@ -109,7 +108,7 @@ class DemoCommand : public Command {
     Report pole_report;
     poles::PoleAnalysisOptions pole_options;
     pole_options.threads = threads_;
-    pole_options.label = thread_count(threads_, 2) == 1;
+    pole_options.label = !poles::label_beside(threads_);
     poles::PoleAnalysis analysis = poles::analyse_poles(samples, pole_options, &pole_report);
     std::optional<poles::PendingLabels> pending;
     if (!analysis.labelled) {

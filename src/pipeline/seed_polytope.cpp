@@ -235,7 +235,7 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples, const SeedOp
   if (pole_options.threads == 0) pole_options.threads = options.threads;
   // With more than one thread the labels are computed beside the level (they are only
   // checked at its end); with one, before it, as analyse_poles does by default.
-  const bool beside = thread_count(options.threads, 2) > 1;
+  const bool beside = poles::label_beside(options.threads);
   pole_options.label = !beside;
   poles::PoleAnalysis analysis = poles::analyse_poles(sorted, pole_options, &rep);
   std::optional<poles::PendingLabels> pending;

@@ -182,13 +182,14 @@ PoleAnalysis analyse_poles(std::span<const Point3> samples, const PoleAnalysisOp
     });
     analysis.labelled = true;
   } else {
-    Report::Stage stage(r, "pole distance");
-    analysis.poles.label.assign(analysis.poles.size(), PoleLabel::unlabelled);
+    Report::Stage stage(r, "pole distance");  // compute_poles left every pole unlabelled
     analysis.dhat = pole_distance(samples, analysis.poles, options.threads);
   }
   if (report != nullptr) record(*report, analysis);
   return analysis;
 }
+
+bool label_beside(unsigned threads) { return thread_count(threads, 2) > 1; }
 
 PendingLabels::PendingLabels(PoleAnalysis& analysis, std::span<const Point3> samples,
                              const LabelingParameters& parameters, Report* report)

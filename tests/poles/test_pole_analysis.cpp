@@ -257,6 +257,9 @@ TEST_CASE("labels left for later: PendingLabels gives what analyse_poles would h
   CHECK_THROWS_AS(rstruct::poles::PendingLabels(b, samples, bad), rstruct::InvalidInput);
   later.labeling = bad;
   CHECK_THROWS_WITH(analyse_poles(samples, later), Catch::Contains("same_min_cos"));
+  // Beside other work only when a second thread can take the labels.
+  CHECK_FALSE(rstruct::poles::label_beside(1));
+  CHECK(rstruct::poles::label_beside(2));
   // Destroyed without wait(): joins, and the analysis stays unlabelled.
   { rstruct::poles::PendingLabels unwaited(b, samples); }
   CHECK_FALSE(b.labelled);

@@ -92,6 +92,11 @@ class PendingLabels {
   std::thread thread_;
 };
 
+/// Whether a pipeline on `threads` threads (0: hardware concurrency) should leave the labels
+/// to a PendingLabels beside its next work: only when a second thread can take them (one
+/// thread labels first, inside analyse_poles).
+bool label_beside(unsigned threads);
+
 /// The 8 box sites used by analyse_poles (exposed for tests).
 std::vector<Point3> bounding_box_sites(std::span<const Point3> samples, double box_scale);
 
