@@ -306,12 +306,15 @@ int main(int argc, char** argv) {
                      rstruct::setcover::to_string(st.stopped_by));
         std::fprintf(stderr,
                      "run %d level %zu: set cover of %zu entries %.3f s: reduction %.3f "
-                     "(domination work %.1f per entry), greedy %.3f, subgradient %.3f, local "
-                     "search %.3f, certificate %.3f\n",
+                     "(domination work %.1f per entry; %lld rows and %lld columns dominated, %lld "
+                     "columns forced), greedy %.3f, subgradient %.3f, local search %.3f, "
+                     "certificate %.3f\n",
                      run + 1, l + 1, seed.prune.entries, st.seconds, st.reduction_seconds,
                      static_cast<double>(st.reduction_work) /
                          static_cast<double>(std::max<std::size_t>(seed.prune.entries, 1)),
-                     st.greedy_seconds, st.subgradient_seconds, st.local_search_seconds,
+                     static_cast<long long>(st.dominated_rows),
+                     static_cast<long long>(st.dominated_columns),
+                     static_cast<long long>(st.forced_columns), st.greedy_seconds, st.subgradient_seconds, st.local_search_seconds,
                      st.certificate_seconds);
       }
       std::fprintf(stderr, "run %d level %zu: output hash %016llx\n", run + 1, l + 1,
