@@ -14,7 +14,20 @@
 #include <thread>
 #include <vector>
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
 namespace rstruct {
+
+/// A hint to the processor inside a short busy wait (x86: pause; elsewhere: nothing).
+inline void cpu_relax() noexcept {
+#if defined(__x86_64__) || defined(__i386__)
+  _mm_pause();
+#elif defined(__aarch64__)
+  asm volatile("yield");
+#endif
+}
 
 /// Threads to use for `requested` (0: hardware concurrency), never more than one per
 /// `min_chunk` items of `n` and never less than one.
