@@ -14,16 +14,13 @@
 #include <thread>
 #include <vector>
 
-#if defined(__x86_64__) || defined(__i386__)
-#include <immintrin.h>
-#endif
-
 namespace rstruct {
 
-/// A hint to the processor inside a short busy wait (x86: pause; elsewhere: nothing).
+/// A hint to the processor inside a short busy wait (x86: pause, AArch64: yield, elsewhere
+/// nothing).
 inline void cpu_relax() noexcept {
 #if defined(__x86_64__) || defined(__i386__)
-  _mm_pause();
+  __builtin_ia32_pause();  // GCC and Clang; no <immintrin.h> in a header included everywhere
 #elif defined(__aarch64__)
   asm volatile("yield");
 #endif
