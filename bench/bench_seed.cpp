@@ -314,8 +314,8 @@ int main(int argc, char** argv) {
                          static_cast<double>(std::max<std::size_t>(seed.prune.entries, 1)),
                      static_cast<long long>(st.dominated_rows),
                      static_cast<long long>(st.dominated_columns),
-                     static_cast<long long>(st.forced_columns), st.greedy_seconds, st.subgradient_seconds, st.local_search_seconds,
-                     st.certificate_seconds);
+                     static_cast<long long>(st.forced_columns), st.greedy_seconds,
+                     st.subgradient_seconds, st.local_search_seconds, st.certificate_seconds);
       }
       std::fprintf(stderr, "run %d level %zu: output hash %016llx\n", run + 1, l + 1,
                    static_cast<unsigned long long>(output_hash(seed)));

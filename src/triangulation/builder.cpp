@@ -542,7 +542,7 @@ void Builder::run_worker(const std::vector<VertexId>& list, std::size_t from, Ce
     bool inserted = !exhausted_ && insert_owned(p);
     for (int t = 0; !inserted && locking_ && !exhausted_ && t < kAtOnce; ++t) {
       unlock_attempt();
-      for (int k = 0; k < kPauses; ++k) cpu_relax();
+      for (int pause = 0; pause < kPauses; ++pause) cpu_relax();
       inserted = insert_owned(p);
     }
     if (!inserted) {

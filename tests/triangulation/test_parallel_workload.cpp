@@ -63,9 +63,10 @@ TEST_CASE("points on a torus: locks after the first large pass") {
 
 TEST_CASE("points on a torus: a point kept out by the other worker's locks is tried again") {
   // The other worker holds those locks only until its insertion ends, so the point is tried
-  // again at once (Builder::run_worker). 1.2·10^5 torus points (above the size up to which
-  // -Dchecks=expensive validates every triangulation: test_parallel_insertion does), two
-  // workers, share deferred over three runs (2026-12-05): without the immediate retries
+  // again at once (Builder::run_worker). 1.2·10^5 torus points: more than the 10^5 up to
+  // which -Dchecks=expensive validates each triangulation (10 s a run here; validity is
+  // test_parallel_insertion's). Two workers, share deferred over three runs (2026-12-05):
+  // without the immediate retries
   // 1.4-1.6 % (debugoptimized), 0.58-0.70 % (sanitizers); with them 0.13-0.25 % and
   // 0.12-0.26 %. Over three runs, as a descheduled worker can hold its locks for
   // milliseconds.
