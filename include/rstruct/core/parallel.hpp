@@ -5,6 +5,8 @@
 /// chunks of the range from a shared atomic counter, so uneven chunks (expensive exact
 /// fallbacks, long walks) balance themselves. An exception thrown by any chunk stops the
 /// other threads from taking new chunks and is rethrown in the caller (the first one wins).
+/// Also cpu_relax(), the processor hint inside short busy waits (the parallel triangulation's
+/// retries after another worker's vertex locks).
 
 #include <algorithm>
 #include <atomic>
