@@ -38,6 +38,9 @@ class IndexedMaxHeap {
     sift_up(k);
   }
 
+  /// The id of the first entry. \pre !empty().
+  std::uint32_t top_id() const { return heap_.front().id; }
+
   /// Removes and returns the first entry. \pre !empty().
   std::pair<double, std::uint32_t> pop() {
     const Entry top = heap_.front();

@@ -1,5 +1,6 @@
 #include "rstruct/poles/pole_labeling.hpp"
 
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <utility>
@@ -25,34 +26,55 @@ void check_threshold(double value, const char* name) {
 /// Poles incident to each sample s (s is a vertex of the pole's tetrahedron), CSR, with the
 /// unit vector from s towards each such pole: the cosine of the angle at which two polar
 /// spheres through s meet is then one dot product.
+///
+/// Popping a pole reads the lists of its four sites. Each pole keeps where it is in them
+/// (`own`), and the entries mark the first and last of each list: one random load, then
+/// four independent ones, where the pole's sites, the lists' starts and a search for the
+/// pole in each list were three dependent loads (10⁶ torus samples: half the labelling's
+/// time went to waiting for them).
 struct Incidence {
   struct Entry {
     Vec3 unit;
-    std::uint32_t pole;
+    std::uint32_t tagged_pole;  // the pole, with kFirst / kLast on a list's ends
+    std::uint32_t pole() const { return tagged_pole & kPoleMask; }
   };
-  std::vector<std::uint32_t> start;
+  static constexpr std::uint32_t kFirst = 1u << 31, kLast = 1u << 30;
+  static constexpr std::uint32_t kPoleMask = kLast - 1;
+  static constexpr std::uint32_t kNoList = 0xffffffffU;  // a bounding-box site
   std::vector<Entry> entries;  // a sample's poles side by side: one or two cache lines
+  std::vector<std::array<std::uint32_t, 4>> own;  // per pole and site: its entry, or kNoList
 };
 
 Incidence build_incidence(const PoleSet& poles, std::span<const Point3> samples) {
   const std::size_t n = poles.sample_count;
-  Incidence inc;
-  inc.start.assign(n + 1, 0);
+  if (poles.size() > Incidence::kPoleMask) {
+    throw InvalidInput("pole labeling: " + std::to_string(poles.size()) + " poles (at most " +
+                       std::to_string(Incidence::kPoleMask) + ")");
+  }
+  std::vector<std::uint32_t> start(n + 1, 0);
   for (const auto& q : poles.sites) {
     for (const std::uint32_t v : q) {
-      if (v < n) ++inc.start[v + 1];
+      if (v < n) ++start[v + 1];
     }
   }
-  for (std::size_t s = 0; s < n; ++s) inc.start[s + 1] += inc.start[s];
-  inc.entries.resize(inc.start[n]);
-  std::vector<std::uint32_t> fill(inc.start.begin(), inc.start.end() - 1);
+  for (std::size_t s = 0; s < n; ++s) start[s + 1] += start[s];
+  Incidence inc;
+  inc.entries.resize(start[n]);
+  inc.own.resize(poles.size());
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
   for (std::uint32_t p = 0; p < poles.size(); ++p) {
-    for (const std::uint32_t v : poles.sites[p]) {
+    for (std::size_t t = 0; t < 4; ++t) {
+      const std::uint32_t v = poles.sites[p][t];
+      inc.own[p][t] = Incidence::kNoList;
       if (v >= n) continue;
       const Vec3 d = poles.centre[p] - samples[v];
       const double length = norm(d);
+      const std::uint32_t k = fill[v]++;
+      inc.own[p][t] = k;
       // A zero vector (pole on the sample, impossible for radius > 0) gives no evidence.
-      inc.entries[fill[v]++] = {length > 0 ? d / length : Vec3{}, p};
+      inc.entries[k] = {length > 0 ? d / length : Vec3{},
+                        p | (k == start[v] ? Incidence::kFirst : 0u) |
+                            (k + 1 == start[v + 1] ? Incidence::kLast : 0u)};
     }
   }
   return inc;
@@ -77,6 +99,8 @@ class Labeler {
     }
     while (!heap_.empty()) {
       const std::uint32_t p = heap_.pop().second;  // its priority: the larger evidence
+      // Likely the next pole popped (unless p's neighbours overtake it): its lists' places.
+      if (!heap_.empty()) __builtin_prefetch(&incidence_.own[heap_.top_id()]);
       done_[p] = 1;
       const Evidence& e = evidence_[p];
       if (e.inner == e.outer) {
@@ -110,26 +134,44 @@ class Labeler {
   void propagate(std::uint32_t p, LabelingStats& stats) {
     const PoleLabel same = poles_.label[p];
     const PoleLabel other = same == PoleLabel::inner ? PoleLabel::outer : PoleLabel::inner;
-    for (const std::uint32_t s : poles_.sites[p]) {
-      if (s >= poles_.sample_count) continue;
-      const std::uint32_t begin = incidence_.start[s], end = incidence_.start[s + 1];
-      const Incidence::Entry* entries = incidence_.entries.data();
-      std::uint32_t own = begin;
-      while (entries[own].pole != p) ++own;  // p is incident to s by construction
+    const Incidence::Entry* entries = incidence_.entries.data();
+    // The four lists are scattered: ask for all of them before working through the first.
+    for (const std::uint32_t own : incidence_.own[p]) {
+      if (own != Incidence::kNoList) __builtin_prefetch(&entries[own]);
+    }
+    // The evidence first, the (scattered) evidence records it goes to asked for meanwhile;
+    // then given in the same order.
+    gifts_.clear();
+    for (const std::uint32_t own : incidence_.own[p]) {
+      if (own == Incidence::kNoList) continue;
+      std::uint32_t k = own;
+      while ((entries[k].tagged_pole & Incidence::kFirst) == 0) --k;
       const Vec3 up = entries[own].unit;
-      for (std::uint32_t k = begin; k < end; ++k) {
-        if (k == own) continue;
-        ++stats.pairs_examined;
-        const double c = dot(up, entries[k].unit);
-        if (c >= parameters_.same_min_cos) {
-          give(entries[k].pole, same, c);
-        } else if (-c >= parameters_.opposite_min_cos) {
-          give(entries[k].pole, other, -c);
+      for (;; ++k) {
+        const Incidence::Entry& e = entries[k];
+        if (k != own) {
+          ++stats.pairs_examined;
+          const double c = dot(up, e.unit);
+          if (c >= parameters_.same_min_cos) {
+            __builtin_prefetch(&evidence_[e.pole()]);
+            gifts_.push_back({e.pole(), same, c});
+          } else if (-c >= parameters_.opposite_min_cos) {
+            __builtin_prefetch(&evidence_[e.pole()]);
+            gifts_.push_back({e.pole(), other, -c});
+          }
         }
+        if ((e.tagged_pole & Incidence::kLast) != 0) break;
       }
     }
+    for (const Gift& g : gifts_) give(g.pole, g.side, g.weight);
   }
 
+  struct Gift {
+    std::uint32_t pole;
+    PoleLabel side;
+    double weight;
+  };
+  std::vector<Gift> gifts_;  // propagate()'s, reused
   PoleSet& poles_;
   LabelingParameters parameters_;
   Incidence incidence_;
