@@ -14,6 +14,8 @@ namespace {
 /// Items per round of a domination pass, and per parallel chunk of a round.
 constexpr std::int32_t kRound = 1 << 16;
 constexpr std::size_t kChunk = 1 << 10;
+/// Rows or columns per parallel chunk of the signatures and of the components' copy.
+constexpr std::size_t kSignatureChunk = 1 << 14;
 
 /// Alive flags and alive counts over the original instance.
 class Presolver {
@@ -39,17 +41,35 @@ class Presolver {
   /// column, for a cheap "cannot be a subset" test. Sets only shrink during a pass, so a
   /// signature taken at the pass start over-approximates: it can hide a domination (less
   /// reduction) but never fake one (the exact count below decides).
+  /// Rows and columns each on their own (both from the instance's two lists), so that
+  /// the two loops run on all threads without sharing a word.
   void take_signatures() {
-    row_sig_.assign(static_cast<std::size_t>(inst_.num_rows()), 0);
-    col_sig_.assign(static_cast<std::size_t>(inst_.num_cols()), 0);
-    for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
-      if (!col_alive_[j]) continue;
-      for (std::int32_t i : inst_.column(j)) {
-        if (!row_alive_[i]) continue;
-        row_sig_[i] |= bit(j);
-        col_sig_[j] |= bit(i);
-      }
-    }
+    row_sig_.resize(static_cast<std::size_t>(inst_.num_rows()));
+    col_sig_.resize(static_cast<std::size_t>(inst_.num_cols()));
+    parallel_chunks(col_sig_.size(), threads_, kSignatureChunk,
+                    [&](std::size_t begin, std::size_t end, unsigned) {
+                      for (std::size_t j = begin; j < end; ++j) {
+                        std::uint64_t sig = 0;
+                        if (col_alive_[j]) {
+                          for (std::int32_t i : inst_.column(static_cast<std::int32_t>(j))) {
+                            if (row_alive_[i]) sig |= bit(i);
+                          }
+                        }
+                        col_sig_[j] = sig;
+                      }
+                    });
+    parallel_chunks(row_sig_.size(), threads_, kSignatureChunk,
+                    [&](std::size_t begin, std::size_t end, unsigned) {
+                      for (std::size_t i = begin; i < end; ++i) {
+                        std::uint64_t sig = 0;
+                        if (row_alive_[i]) {
+                          for (std::int32_t j : inst_.row(static_cast<std::int32_t>(i))) {
+                            if (col_alive_[j]) sig |= bit(j);
+                          }
+                        }
+                        row_sig_[i] = sig;
+                      }
+                    });
   }
   static std::uint64_t bit(std::int32_t x) {
     return std::uint64_t{1} << ((static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ULL) >> 58);
@@ -226,6 +246,12 @@ class Presolver {
   }
 
   void split_components();
+  /// Component c's entries (its rows' local numbers, column by column) into `entries`, at
+  /// the offsets `starts` of its columns, on `threads` threads.
+  void copy_component(std::size_t c, const std::vector<std::int32_t>& comp_of_row,
+                      const std::vector<std::int32_t>& local,
+                      const std::vector<std::int64_t>& starts, std::vector<std::int32_t>& entries,
+                      unsigned threads) const;
   bool out_of_time() {
     if (clock_.seconds() > deadline_) out.timed_out = true;
     return out.timed_out;
@@ -259,6 +285,24 @@ std::int32_t find_root(std::vector<std::int32_t>& parent, std::int32_t x) {
     x = parent[x];
   }
   return x;
+}
+
+void Presolver::copy_component(std::size_t c, const std::vector<std::int32_t>& comp_of_row,
+                               const std::vector<std::int32_t>& local,
+                               const std::vector<std::int64_t>& starts,
+                               std::vector<std::int32_t>& entries, unsigned threads) const {
+  const std::vector<std::int32_t>& cols = out.components[c].cols;
+  parallel_chunks(cols.size(), threads, kSignatureChunk,
+                  [&](std::size_t begin, std::size_t end, unsigned) {
+                    for (std::size_t k = begin; k < end; ++k) {
+                      const std::int32_t j = cols[k];
+                      auto at = static_cast<std::size_t>(starts[k]);
+                      for (std::int32_t i : inst_.column(j)) {
+                        if (comp_of_row[i] >= 0) entries[at++] = local[i];
+                      }
+                      RSTRUCT_ASSERT(at == static_cast<std::size_t>(starts[k + 1]));
+                    }
+                  });
 }
 
 void Presolver::split_components() {
@@ -297,45 +341,41 @@ void Presolver::split_components() {
   }
   parent = {};
   comp_of_root = {};
-  std::vector<std::vector<std::int64_t>> starts(out.components.size(), std::vector<std::int64_t>{0});
-  std::vector<std::vector<std::int32_t>> entries(out.components.size());
-  std::vector<std::vector<double>> costs(out.components.size());
-  // Calls entry(comp, i) for every alive row i of column j, comp being i's component, and
-  // returns the column's component (−1: no alive row).
-  const auto visit = [&](std::int32_t j, auto&& entry) {
-    std::int32_t comp = -1;
-    for (std::int32_t i : inst_.column(j)) {
-      if (comp_of_row[i] < 0) continue;  // a dead row
-      comp = comp_of_row[i];
-      entry(comp, i);
-    }
-    return comp;
-  };
-  {
-    // Exact sizes first: grown by doubling, the arrays would take about twice their size in
-    // fresh memory (10^6 torus samples: 2.5·10^7 entries in one component).
-    std::vector<std::int64_t> entry_count(out.components.size(), 0);
-    std::vector<std::int32_t> col_count(out.components.size(), 0);
-    for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
-      if (!col_alive_[j]) continue;
-      const std::int32_t comp = visit(j, [&](std::int32_t c, std::int32_t) { ++entry_count[c]; });
-      if (comp >= 0) ++col_count[comp];
-    }
-    for (std::size_t c = 0; c < out.components.size(); ++c) {
-      entries[c].reserve(static_cast<std::size_t>(entry_count[c]));
-      starts[c].reserve(static_cast<std::size_t>(col_count[c]) + 1);
-      costs[c].reserve(static_cast<std::size_t>(col_count[c]));
-      out.components[c].cols.reserve(static_cast<std::size_t>(col_count[c]));
-    }
-  }
+  // Each alive column's component (that of any of its alive rows: union-find put them all
+  // in one) and place there, and where its entries go: a column has col_len_ alive rows.
+  // The entries are then copied on all threads, each column to its own place.
+  const std::size_t num_comps = out.components.size();
+  std::vector<std::vector<std::int64_t>> starts(num_comps, std::vector<std::int64_t>{0});
+  std::vector<std::vector<double>> costs(num_comps);
   for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
     if (!col_alive_[j]) continue;
-    const std::int32_t comp =
-        visit(j, [&](std::int32_t c, std::int32_t i) { entries[c].push_back(local[i]); });
+    std::int32_t comp = -1;
+    for (std::int32_t i : inst_.column(j)) {
+      if (comp_of_row[i] >= 0) {
+        comp = comp_of_row[i];
+        break;
+      }
+    }
     RSTRUCT_ASSERT(comp >= 0);
-    starts[comp].push_back(static_cast<std::int64_t>(entries[comp].size()));
-    costs[comp].push_back(inst_.cost(j));
-    out.components[comp].cols.push_back(j);
+    const auto c = static_cast<std::size_t>(comp);
+    starts[c].push_back(starts[c].back() + col_len_[j]);
+    costs[c].push_back(inst_.cost(j));
+    out.components[c].cols.push_back(j);
+  }
+  std::vector<std::vector<std::int32_t>> entries(num_comps);
+  for (std::size_t c = 0; c < num_comps; ++c) {
+    entries[c].resize(static_cast<std::size_t>(starts[c].back()));
+  }
+  parallel_chunks(num_comps, threads_, 1, [&](std::size_t begin, std::size_t end, unsigned) {
+    for (std::size_t c = begin; c < end; ++c) {
+      // Small components: one thread each; a large one is copied below on all of them.
+      if (out.components[c].cols.size() >= kSignatureChunk) continue;
+      copy_component(c, comp_of_row, local, starts[c], entries[c], 1);
+    }
+  });
+  for (std::size_t c = 0; c < num_comps; ++c) {
+    if (out.components[c].cols.size() < kSignatureChunk) continue;
+    copy_component(c, comp_of_row, local, starts[c], entries[c], threads_);
   }
   for (std::size_t c = 0; c < out.components.size(); ++c) {
     auto& comp = out.components[c];

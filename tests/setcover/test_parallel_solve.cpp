@@ -73,11 +73,52 @@ void check_same_reduction(const detail::Reduction& a, const detail::Reduction& b
       same = std::equal(p.begin(), p.end(), q.begin(), q.end()) &&
              x.instance.cost(j) == y.instance.cost(j);
     }
+    for (std::int32_t i = 0; same && i < x.instance.num_rows(); ++i) {
+      const auto p = x.instance.row(i);
+      const auto q = y.instance.row(i);
+      same = std::equal(p.begin(), p.end(), q.begin(), q.end());
+    }
     CHECK(same);
   }
 }
 
+/// Many components: 3,000 blocks of 40 rows and 12 columns (the presolve leaves hundreds of
+/// them, each far smaller than a parallel chunk of columns), and one block of 30,000 rows
+/// and 20,000 columns (larger than one): the components' copy takes both parallel paths.
+Instance blocks_instance(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<std::vector<std::int32_t>> cols;
+  std::int32_t rows = 0;
+  const auto block = [&](std::int32_t height, std::int32_t width, int per_col) {
+    for (std::int32_t j = 0; j < width; ++j) {
+      std::vector<std::int32_t> c;
+      for (int t = 0; t < per_col; ++t) c.push_back(rows + static_cast<std::int32_t>(rng() % height));
+      cols.push_back(c);
+    }
+    for (std::int32_t i = 0; i < height; ++i) cols.push_back({rows + i});  // coverage
+    rows += height;
+  };
+  for (int b = 0; b < 1500; ++b) block(40, 12, 8);
+  block(30'000, 20'000, 12);
+  for (int b = 0; b < 1500; ++b) block(40, 12, 8);
+  return Instance::from_columns(rows, cols);
+}
+
 }  // namespace
+
+TEST_CASE("presolve: many components, the same on 1, 2 and 3 threads") {
+  const Instance inst = blocks_instance(0xb10c);
+  const rstruct::Stopwatch clock;
+  const detail::Reduction one = detail::reduce(inst, true, 1e9, clock, 0, 1);
+  REQUIRE(one.components.size() > 500);  // the presolve empties some blocks
+  std::size_t widest = 0;
+  for (const detail::Component& c : one.components) widest = std::max(widest, c.cols.size());
+  CHECK(widest > 16'384);
+  for (const unsigned threads : {2u, 3u}) {
+    INFO(threads << " threads");
+    check_same_reduction(one, detail::reduce(inst, true, 1e9, clock, 0, threads));
+  }
+}
 
 TEST_CASE("presolve: the same removals, work and components on 1, 2 and 3 threads") {
   const Instance inst = large_instance(0x5eed1);
