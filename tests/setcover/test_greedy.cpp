@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <random>
 
 #include "small_instances.hpp"
 
@@ -85,4 +86,34 @@ TEST_CASE("lazy greedy takes the columns the plain greedy takes") {
     const auto lazy = rstruct::setcover::detail::greedy_cover(inst, u, allowed, start);
     RC_ASSERT(lazy == naive_greedy(inst, u, allowed, start));
   });
+}
+
+TEST_CASE("lazy greedy takes the columns the plain greedy takes, on instances of hundreds of columns") {
+  // Large enough for a deep heap, whose every level the re-queueing of stale columns walks;
+  // small integer costs and multipliers on a grid of quarters give many equal scores.
+  for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+    INFO("seed " << seed);
+    std::mt19937_64 rng(seed);
+    const auto rows = static_cast<std::int32_t>(300 + rng() % 500);
+    const auto cols = static_cast<std::int32_t>(1000 + rng() % 1000);
+    std::vector<std::vector<std::int32_t>> columns(static_cast<std::size_t>(cols));
+    std::vector<double> costs;
+    for (auto& c : columns) {
+      const auto centre = static_cast<std::int32_t>(rng() % static_cast<std::uint64_t>(rows));
+      const auto size = 1 + rng() % 12;
+      for (std::uint64_t t = 0; t < size; ++t) {
+        c.push_back(std::clamp<std::int32_t>(centre + static_cast<std::int32_t>(rng() % 21) - 10, 0, rows - 1));
+      }
+      // Unit, small integer and real costs (real: the scores rarely tie, and a stale
+      // column's new score often falls between the next ones in the queue).
+      const double real = 1.0 + static_cast<double>(rng() % 1000) / 1000.0;
+      costs.push_back(seed % 3 == 0 ? 1.0 : seed % 3 == 1 ? static_cast<double>(1 + rng() % 4) : real);
+    }
+    for (std::int32_t i = 0; i < rows; ++i) columns[static_cast<std::size_t>(rng() % columns.size())].push_back(i);
+    const Instance inst = Instance::from_columns(rows, columns, costs);
+    std::vector<double> u;
+    for (std::int32_t i = 0; seed % 4 == 0 && i < rows; ++i) u.push_back(0.25 * static_cast<double>(rng() % 8));
+    const auto lazy = rstruct::setcover::detail::greedy_cover(inst, u, {}, {});
+    CHECK(lazy == naive_greedy(inst, u, {}, {}));
+  }
 }
