@@ -1,12 +1,15 @@
 #include "rstruct/poles/pole_labeling.hpp"
 
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <utility>
 #include <vector>
 
 #include "indexed_max_heap.hpp"
+#include "resumable_labeling.hpp"
 #include "rstruct/core/error.hpp"
 
 namespace rstruct::poles {
@@ -80,6 +83,10 @@ Incidence build_incidence(const PoleSet& poles, std::span<const Point3> samples)
   return inc;
 }
 
+}  // namespace
+
+namespace detail {
+
 class Labeler {
  public:
   Labeler(PoleSet& poles, std::span<const Point3> samples, const LabelingParameters& parameters)
@@ -88,16 +95,20 @@ class Labeler {
         incidence_(build_incidence(poles, samples)),
         evidence_(poles.size()),
         done_(poles.size(), 0),
-        heap_(poles.size()) {}
-
-  void run(LabelingStats& stats) {
+        heap_(poles.size()) {
     for (std::uint32_t p = 0; p < poles_.size(); ++p) {
       if (poles_.is_box_pole(p)) {
         evidence_[p].outer = kSeedWeight;
         heap_.raise(p, kSeedWeight);
       }
     }
-    while (!heap_.empty()) {
+  }
+
+  /// Pops poles until the queue is empty (true) or `stop` is seen set (false; checked
+  /// every 1024 poles). A later call goes on where this one stopped.
+  bool run(LabelingStats& stats, const std::atomic<bool>& stop) {
+    for (std::uint32_t popped = 0; !heap_.empty(); ++popped) {
+      if ((popped & 1023u) == 1023u && stop.load(std::memory_order_relaxed)) return false;
       const std::uint32_t p = heap_.pop().second;  // its priority: the larger evidence
       // Likely the next pole popped (unless p's neighbours overtake it): its lists' places.
       if (!heap_.empty()) __builtin_prefetch(&incidence_.own[heap_.top_id()]);
@@ -110,6 +121,7 @@ class Labeler {
       poles_.label[p] = e.inner > e.outer ? PoleLabel::inner : PoleLabel::outer;
       propagate(p, stats);
     }
+    return true;
   }
 
   /// Evidence for the side other than the pole's label.
@@ -184,7 +196,11 @@ class Labeler {
   detail::IndexedMaxHeap heap_;
 };
 
-void count(const PoleSet& poles, const Labeler& labeler, LabelingStats& stats) {
+}  // namespace detail
+
+namespace {
+
+void count(const PoleSet& poles, const detail::Labeler& labeler, LabelingStats& stats) {
   for (std::uint32_t p = 0; p < poles.size(); ++p) {
     switch (poles.label[p]) {
       case PoleLabel::inner: ++stats.inner; break;
@@ -212,6 +228,17 @@ void check_labeling_parameters(const LabelingParameters& parameters) {
 
 LabelingStats label_poles(PoleSet& poles, std::span<const Point3> samples,
                           const LabelingParameters& parameters) {
+  detail::ResumableLabeling labeling(poles, samples, parameters);
+  const std::atomic<bool> never{false};
+  labeling.run(never);
+  return labeling.finish();
+}
+
+namespace detail {
+
+ResumableLabeling::ResumableLabeling(PoleSet& poles, std::span<const Point3> samples,
+                                     const LabelingParameters& parameters)
+    : poles_(poles) {
   check_labeling_parameters(parameters);
   if (samples.size() != poles.sample_count) {
     throw InvalidInput("pole labeling: " + std::to_string(samples.size()) +
@@ -219,11 +246,23 @@ LabelingStats label_poles(PoleSet& poles, std::span<const Point3> samples,
                        std::to_string(poles.sample_count));
   }
   poles.label.assign(poles.size(), PoleLabel::unlabelled);
-  LabelingStats stats;
-  Labeler labeler(poles, samples, parameters);
-  labeler.run(stats);
-  count(poles, labeler, stats);
+  labeler_ = std::make_unique<Labeler>(poles, samples, parameters);
+}
+
+ResumableLabeling::~ResumableLabeling() = default;
+
+bool ResumableLabeling::run(const std::atomic<bool>& stop) {
+  done_ = done_ || labeler_->run(stats_, stop);
+  return done_;
+}
+
+LabelingStats ResumableLabeling::finish() {
+  if (!done_) throw InternalError("pole labeling: finish() before the labelling is done");
+  LabelingStats stats = stats_;
+  count(poles_, *labeler_, stats);
   return stats;
 }
+
+}  // namespace detail
 
 }  // namespace rstruct::poles

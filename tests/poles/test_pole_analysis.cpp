@@ -4,6 +4,7 @@
 #include "rstruct/poles/pole_analysis.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -12,6 +13,7 @@
 #include <tuple>
 #include <vector>
 
+#include "poles/resumable_labeling.hpp"
 #include "rstruct/core/error.hpp"
 
 using rstruct::Point3;
@@ -263,6 +265,42 @@ TEST_CASE("labels left for later: PendingLabels gives what analyse_poles would h
   // Destroyed without wait(): joins, and the analysis stays unlabelled.
   { rstruct::poles::PendingLabels unwaited(b, samples); }
   CHECK_FALSE(b.labelled);
+}
+
+TEST_CASE("a labelling stopped every 1024 poles and resumed gives label_poles' labels") {
+  // PendingLabels::wait() stops its idle-priority thread and finishes on the caller's.
+  const std::vector<Point3> samples = torus_samples(3000, 11);
+  PoleAnalysisOptions later;
+  later.label = false;
+  auto a = analyse_poles(samples, later);
+  rstruct::poles::PoleSet reference = a.poles;
+  const rstruct::poles::LabelingStats expected = rstruct::poles::label_poles(reference, samples);
+  REQUIRE(a.poles.size() > 4 * 1024);
+  rstruct::poles::detail::ResumableLabeling labeling(a.poles, samples, {});
+  const std::atomic<bool> stop{true};
+  CHECK_FALSE(labeling.run(stop));
+  CHECK_THROWS_AS(labeling.finish(), rstruct::InternalError);
+  const auto labelled = [&] {
+    return std::count_if(a.poles.label.begin(), a.poles.label.end(),
+                         [](PoleLabel l) { return l != PoleLabel::unlabelled; });
+  };
+  CHECK(labelled() > 0);
+  CHECK(labelled() <= 1024);
+  int stops = 1;
+  while (!labeling.run(stop)) ++stops;
+  CHECK(stops >= 4);
+  CHECK(labeling.run(stop));  // done stays done
+  const rstruct::poles::LabelingStats stats = labeling.finish();
+  CHECK(a.poles.label == reference.label);
+  CHECK(stats.inner == expected.inner);
+  CHECK(stats.outer == expected.outer);
+  CHECK(stats.unlabelled == expected.unlabelled);
+  CHECK(stats.ties == expected.ties);
+  CHECK(stats.contradictory == expected.contradictory);
+  CHECK(stats.inconsistent_samples == expected.inconsistent_samples);
+  CHECK(stats.pairs_examined == expected.pairs_examined);
+  CHECK(expected.inner > 0);
+  CHECK(expected.outer > 0);
 }
 
 TEST_CASE("the pole analysis does not depend on the threads of its Delaunay triangulation") {

@@ -12,8 +12,10 @@
 ///    PendingLabels, which runs them on a thread of its own beside the caller's next work.
 /// 4. D̂(s) for every sample (pole_distance.hpp), over all poles.
 
+#include <atomic>
 #include <cstddef>
 #include <exception>
+#include <memory>
 #include <span>
 #include <thread>
 #include <vector>
@@ -24,6 +26,10 @@
 #include "rstruct/poles/pole_set.hpp"
 
 namespace rstruct::poles {
+
+namespace detail {
+class ResumableLabeling;
+}
 
 struct PoleAnalysisOptions {
   /// Half-width of the bounding-box sites' box, in units of the samples' largest extent.
@@ -69,6 +75,11 @@ PoleAnalysis analyse_poles(std::span<const Point3> samples,
 /// rethrows what the labelling threw; later calls return the same counts at once. The
 /// destructor joins without throwing; without a wait() the analysis stays unlabelled
 /// (labelled false). `samples`, `analysis` and `report` must outlive it.
+///
+/// The thread runs at idle priority (Linux): it takes a core when the caller's threads leave
+/// one idle. wait() stops it between two poles, if it is not done, and finishes the
+/// labelling itself, at the caller's priority: the same labels, never starved by other
+/// programs' threads.
 class PendingLabels {
  public:
   /// \throws InvalidInput if the analysis is already labelled.
@@ -89,6 +100,9 @@ class PendingLabels {
   LabelingStats stats_;
   double seconds_ = 0;
   std::exception_ptr error_;
+  std::unique_ptr<detail::ResumableLabeling> labeling_;  // made by the thread
+  std::atomic<bool> stop_{false};
+  bool done_ = false;  // the thread finished the labelling
   std::thread thread_;
 };
 

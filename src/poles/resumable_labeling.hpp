@@ -1,0 +1,38 @@
+#pragma once
+// A pole labelling (label_poles) that can stop between two poles and go on later, possibly
+// on another thread: PendingLabels runs it at idle priority and, if the level is done
+// first, finishes it on the waiting thread. Private to src/poles.
+
+#include <atomic>
+#include <memory>
+#include <span>
+
+#include "rstruct/poles/pole_labeling.hpp"
+
+namespace rstruct::poles::detail {
+
+class Labeler;
+
+class ResumableLabeling {
+ public:
+  /// Checks the inputs (as label_poles), clears the labels, builds the queue.
+  ResumableLabeling(PoleSet& poles, std::span<const Point3> samples,
+                    const LabelingParameters& parameters);
+  ResumableLabeling(const ResumableLabeling&) = delete;
+  ResumableLabeling& operator=(const ResumableLabeling&) = delete;
+  ~ResumableLabeling();
+
+  /// Labels until done (true) or until `stop` is seen set (false). The poles are labelled
+  /// in the same order whatever the stops: the result is label_poles'.
+  bool run(const std::atomic<bool>& stop);
+  /// The statistics, as label_poles returns them. \pre run() returned true.
+  LabelingStats finish();
+
+ private:
+  PoleSet& poles_;
+  std::unique_ptr<Labeler> labeler_;
+  LabelingStats stats_;
+  bool done_ = false;
+};
+
+}  // namespace rstruct::poles::detail
