@@ -44,32 +44,25 @@ class Presolver {
   /// Rows and columns each on their own (both from the instance's two lists), so that
   /// the two loops run on all threads without sharing a word.
   void take_signatures() {
-    row_sig_.resize(static_cast<std::size_t>(inst_.num_rows()));
-    col_sig_.resize(static_cast<std::size_t>(inst_.num_cols()));
-    parallel_chunks(col_sig_.size(), threads_, kSignatureChunk,
-                    [&](std::size_t begin, std::size_t end, unsigned) {
-                      for (std::size_t j = begin; j < end; ++j) {
-                        std::uint64_t sig = 0;
-                        if (col_alive_[j]) {
-                          for (std::int32_t i : inst_.column(static_cast<std::int32_t>(j))) {
-                            if (row_alive_[i]) sig |= bit(i);
+    // sig[x] = the bits of the alive members of item x's list (0 for a dead item).
+    const auto sign = [&](std::vector<std::uint64_t>& sig, const std::vector<char>& alive,
+                          const std::vector<char>& member_alive, auto&& list) {
+      sig.resize(alive.size());
+      parallel_chunks(sig.size(), threads_, kSignatureChunk,
+                      [&](std::size_t begin, std::size_t end, unsigned) {
+                        for (std::size_t x = begin; x < end; ++x) {
+                          std::uint64_t bits = 0;
+                          if (alive[x]) {
+                            for (std::int32_t y : list(static_cast<std::int32_t>(x))) {
+                              if (member_alive[y]) bits |= bit(y);
+                            }
                           }
+                          sig[x] = bits;
                         }
-                        col_sig_[j] = sig;
-                      }
-                    });
-    parallel_chunks(row_sig_.size(), threads_, kSignatureChunk,
-                    [&](std::size_t begin, std::size_t end, unsigned) {
-                      for (std::size_t i = begin; i < end; ++i) {
-                        std::uint64_t sig = 0;
-                        if (row_alive_[i]) {
-                          for (std::int32_t j : inst_.row(static_cast<std::int32_t>(i))) {
-                            if (col_alive_[j]) sig |= bit(j);
-                          }
-                        }
-                        row_sig_[i] = sig;
-                      }
-                    });
+                      });
+    };
+    sign(col_sig_, col_alive_, row_alive_, [&](std::int32_t j) { return inst_.column(j); });
+    sign(row_sig_, row_alive_, col_alive_, [&](std::int32_t i) { return inst_.row(i); });
   }
   static std::uint64_t bit(std::int32_t x) {
     return std::uint64_t{1} << ((static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ULL) >> 58);

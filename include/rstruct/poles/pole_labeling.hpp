@@ -51,6 +51,8 @@ struct LabelingStats {
   std::size_t samples_without_inner = 0; ///< samples with no pole labelled inner
   std::size_t pairs_examined = 0;      ///< (pole, pole) comparisons made
 
+  bool operator==(const LabelingStats&) const = default;
+
   /// True when every pole is labelled, none is contradictory and every sample has one
   /// inner and one outer pole.
   bool is_clean() const {
