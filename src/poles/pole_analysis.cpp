@@ -207,8 +207,9 @@ PendingLabels::PendingLabels(PoleAnalysis& analysis, std::span<const Point3> sam
                        std::to_string(analysis.poles.sample_count));
   }
   check_labeling_parameters(parameters);
-  // The thread touches only analysis.poles (label_poles writes its labels and reads the
-  // rest) and this object's stats_, seconds_ and error_; wait() reads those after join().
+  // The thread touches only analysis.poles (the labelling writes its labels and reads the
+  // rest) and this object's labeling_, done_, seconds_ and error_ (and reads stop_);
+  // wait() reads those after join().
   //
   // It runs at idle priority (Linux's SCHED_IDLE): it takes a core only when the level's
   // threads leave one idle (the set cover's one-thread phases, the waits for its greedy),
