@@ -14,8 +14,9 @@ namespace {
 /// Items per round of a domination pass, and per parallel chunk of a round.
 constexpr std::int32_t kRound = 1 << 16;
 constexpr std::size_t kChunk = 1 << 10;
-/// Rows or columns per parallel chunk of the signatures and of the components' copy.
-constexpr std::size_t kSignatureChunk = 1 << 14;
+/// Rows or columns per parallel chunk of the signatures and of the components' copy (and
+/// the columns of a component copied on all threads).
+constexpr std::size_t kListChunk = 1 << 14;
 
 /// Alive flags and alive counts over the original instance.
 class Presolver {
@@ -48,7 +49,7 @@ class Presolver {
     const auto sign = [&](std::vector<std::uint64_t>& sig, const std::vector<char>& alive,
                           const std::vector<char>& member_alive, auto&& list) {
       sig.resize(alive.size());
-      parallel_chunks(sig.size(), threads_, kSignatureChunk,
+      parallel_chunks(sig.size(), threads_, kListChunk,
                       [&](std::size_t begin, std::size_t end, unsigned) {
                         for (std::size_t x = begin; x < end; ++x) {
                           std::uint64_t bits = 0;
@@ -285,7 +286,7 @@ void Presolver::copy_component(std::size_t c, const std::vector<std::int32_t>& c
                                const std::vector<std::int64_t>& starts,
                                std::vector<std::int32_t>& entries, unsigned threads) const {
   const std::vector<std::int32_t>& cols = out.components[c].cols;
-  parallel_chunks(cols.size(), threads, kSignatureChunk,
+  parallel_chunks(cols.size(), threads, kListChunk,
                   [&](std::size_t begin, std::size_t end, unsigned) {
                     for (std::size_t k = begin; k < end; ++k) {
                       const std::int32_t j = cols[k];
@@ -336,21 +337,34 @@ void Presolver::split_components() {
   comp_of_root = {};
   // Each alive column's component (that of any of its alive rows: union-find put them all
   // in one) and place there, and where its entries go: a column has col_len_ alive rows.
-  // The entries are then copied on all threads, each column to its own place.
+  // The entries are then copied on all threads, each column to its own place. The
+  // per-column arrays get their exact sizes first (grown by doubling, up to twice their
+  // size in fresh memory).
   const std::size_t num_comps = out.components.size();
-  std::vector<std::vector<std::int64_t>> starts(num_comps, std::vector<std::int64_t>{0});
-  std::vector<std::vector<double>> costs(num_comps);
+  std::vector<std::int32_t> comp_of_col(static_cast<std::size_t>(inst_.num_cols()), -1);
+  std::vector<std::size_t> col_count(num_comps, 0);
   for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
     if (!col_alive_[j]) continue;
-    std::int32_t comp = -1;
     for (std::int32_t i : inst_.column(j)) {
       if (comp_of_row[i] >= 0) {
-        comp = comp_of_row[i];
+        comp_of_col[j] = comp_of_row[i];
         break;
       }
     }
-    RSTRUCT_ASSERT(comp >= 0);
-    const auto c = static_cast<std::size_t>(comp);
+    RSTRUCT_ASSERT(comp_of_col[j] >= 0);
+    ++col_count[static_cast<std::size_t>(comp_of_col[j])];
+  }
+  std::vector<std::vector<std::int64_t>> starts(num_comps);
+  std::vector<std::vector<double>> costs(num_comps);
+  for (std::size_t c = 0; c < num_comps; ++c) {
+    starts[c].reserve(col_count[c] + 1);
+    starts[c].push_back(0);
+    costs[c].reserve(col_count[c]);
+    out.components[c].cols.reserve(col_count[c]);
+  }
+  for (std::int32_t j = 0; j < inst_.num_cols(); ++j) {
+    if (comp_of_col[j] < 0) continue;
+    const auto c = static_cast<std::size_t>(comp_of_col[j]);
     starts[c].push_back(starts[c].back() + col_len_[j]);
     costs[c].push_back(inst_.cost(j));
     out.components[c].cols.push_back(j);
@@ -362,12 +376,12 @@ void Presolver::split_components() {
   parallel_chunks(num_comps, threads_, 1, [&](std::size_t begin, std::size_t end, unsigned) {
     for (std::size_t c = begin; c < end; ++c) {
       // Small components: one thread each; a large one is copied below on all of them.
-      if (out.components[c].cols.size() >= kSignatureChunk) continue;
+      if (out.components[c].cols.size() >= kListChunk) continue;
       copy_component(c, comp_of_row, local, starts[c], entries[c], 1);
     }
   });
   for (std::size_t c = 0; c < num_comps; ++c) {
-    if (out.components[c].cols.size() < kSignatureChunk) continue;
+    if (out.components[c].cols.size() < kListChunk) continue;
     copy_component(c, comp_of_row, local, starts[c], entries[c], threads_);
   }
   for (std::size_t c = 0; c < out.components.size(); ++c) {
