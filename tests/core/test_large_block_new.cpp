@@ -148,18 +148,68 @@ TEST_CASE("freed large blocks are served again, carved to size, and merged when 
   ::operator delete(d);
 }
 
-TEST_CASE("a request no cached range holds gives the cache back before taking fresh pages") {
+TEST_CASE("a request no cached range holds takes the largest one's pages, gives the rest back") {
   empty_cache();
-  void* a = ::operator new(16 * kMiB);
+  // a, gap and c carved in this order from one freed block: a and c are not adjacent.
+  ::operator delete(::operator new(48 * kMiB));
+  auto* a = static_cast<unsigned char*>(::operator new(16 * kMiB));
+  auto* gap = static_cast<unsigned char*>(::operator new(8 * kMiB));
+  auto* c = static_cast<unsigned char*>(::operator new(24 * kMiB));
+  REQUIRE(c == a + 24 * kMiB);
+  for (std::size_t i = 0; i < 16 * kMiB; i += 4096) a[i] = static_cast<unsigned char>(i >> 12 | 1);
+  for (std::size_t i = 0; i < 24 * kMiB; i += 4096) c[i] = static_cast<unsigned char>(i >> 12 | 2);
   ::operator delete(a);
-  CHECK(rstruct::large_block_stats().cached_bytes == 16 * kMiB);
-  const std::uint64_t released = rstruct::large_block_stats().released;
-  void* big = ::operator new(32 * kMiB);
-  const rstruct::LargeBlockStats s = rstruct::large_block_stats();
-  CHECK(s.cached_bytes == 0);
-  CHECK(s.released == released + 1);
+  ::operator delete(c);
+  const rstruct::LargeBlockStats s0 = rstruct::large_block_stats();
+  CHECK(s0.cached_bytes == 40 * kMiB);
+  CHECK(s0.cached_blocks == 2);
+  auto* big = static_cast<unsigned char*>(::operator new(64 * kMiB));
+  const rstruct::LargeBlockStats s1 = rstruct::large_block_stats();
   CHECK(address(big) % kHugePage == 0);
+  CHECK(s1.cached_bytes == 0);
+  CHECK(s1.fresh == s0.fresh + 1);
+  CHECK(s1.moved == s0.moved + 1);
+  CHECK(s1.released == s0.released + 1);  // a's range
+  // c's pages, moved with their contents to the front; fresh pages after them.
+  std::size_t wrong = 0;
+  for (std::size_t i = 0; i < 24 * kMiB; i += 4096) {
+    wrong += big[i] != static_cast<unsigned char>(i >> 12 | 2);
+  }
+  CHECK(wrong == 0);
+  for (std::size_t i = 0; i < 64 * kMiB; i += 4096) big[i] = 9;
+  big[64 * kMiB - 1] = 8;
+  CHECK(big[64 * kMiB - 1] == 8);
+  CHECK(big[40 * kMiB] == 9);
+  if (transparent_huge_pages_available()) {
+    const std::string flags = vm_flags_of(address(big));
+    INFO(flags);
+    CHECK(flags.find(" hg") != std::string::npos);
+  }
   ::operator delete(big);
+  ::operator delete(gap);
+}
+
+TEST_CASE("shrink_large_block gives a live block's end to the cache") {
+  empty_cache();
+  auto* a = static_cast<unsigned char*>(::operator new(32 * kMiB));
+  for (std::size_t i = 0; i < 32 * kMiB; i += 4096) a[i] = 5;
+  CHECK(rstruct::shrink_large_block(a, 32 * kMiB, 10 * kMiB + 1));  // keeps 12 MiB
+  CHECK(rstruct::large_block_stats().cached_bytes == 20 * kMiB);
+  CHECK_FALSE(rstruct::shrink_large_block(a, 32 * kMiB, 12 * kMiB));  // nothing more to give
+  CHECK(rstruct::shrink_large_block(a, 32 * kMiB, 0));  // one page stays with the block
+  CHECK(rstruct::large_block_stats().cached_bytes == 30 * kMiB);
+  CHECK(a[0] == 5);
+  CHECK(a[kHugePage - 4096] == 5);
+  // The end, cached, serves the next request; the block is still released by delete.
+  auto* b = static_cast<unsigned char*>(::operator new(30 * kMiB));
+  CHECK(b == a + kHugePage);
+  CHECK(b[0] == 5);
+  ::operator delete(b);
+  ::operator delete(a);
+  CHECK(rstruct::large_block_stats().cached_bytes == 32 * kMiB);
+  CHECK(rstruct::large_block_stats().cached_blocks == 1);
+  int local = 0;
+  CHECK_FALSE(rstruct::shrink_large_block(&local, sizeof local, 0));  // not a large block
 }
 
 TEST_CASE("large blocks from two threads at once stay intact") {
