@@ -43,7 +43,24 @@ void check_soup(const TetrahedronSoup& soup) {
 /// Per sample: the incident tetrahedra chosen as p⁺ and p⁻ (kNoTet if none), and the
 /// vector p⁺ − s.
 struct Choice {
-  std::vector<detail::Circumsphere> spheres;
+  /// Per tetrahedron, its circumcentre's offset (Circumsphere::offset; the squared radius
+  /// is its squared norm, computed again where needed: the same value, in three quarters
+  /// of the memory), in one array per range of tetrahedra (range_begin[k] to
+  /// range_begin[k + 1]), each allocated and filled by its range's thread. Smaller arrays
+  /// fit more often in pages freed earlier (see analyse_poles).
+  std::vector<std::vector<Vec3>> offsets;
+  std::vector<std::uint32_t> range_begin;
+  unsigned range_of(std::uint32_t t) const {
+    const auto last = static_cast<unsigned>(offsets.size() - 1);
+    unsigned k = 0;
+    while (k < last && t >= range_begin[k + 1]) ++k;
+    return k;
+  }
+  detail::Circumsphere sphere(std::uint32_t t) const {
+    const unsigned k = range_of(t);
+    const Vec3& offset = offsets[k][t - range_begin[k]];
+    return {offset, squared_norm(offset)};
+  }
   std::vector<std::uint32_t> first, second;
   std::vector<double> first_r2, second_r2;
   std::vector<Vec3> first_direction;
@@ -83,13 +100,15 @@ struct Best {
 
 /// Circumspheres of the tetrahedra [begin, end), and among them each sample's p⁺
 /// candidate.
-void spheres_and_first_poles(const TetrahedronSoup& soup, std::vector<detail::Circumsphere>& spheres,
-                             std::uint32_t begin, std::uint32_t end, std::uint32_t n, Best best) {
+void spheres_and_first_poles(const TetrahedronSoup& soup, Choice& choice, std::uint32_t begin,
+                             std::uint32_t end, std::uint32_t n, Best best) {
+  std::vector<Vec3>& offsets = choice.offsets[choice.range_of(begin)];
+  offsets.resize(end - begin);
   for (std::uint32_t t = begin; t < end; ++t) {
     const auto& q = soup.tets[t];
     const detail::Circumsphere cs = detail::circumsphere(
         soup.vertices[q[0]], soup.vertices[q[1]], soup.vertices[q[2]], soup.vertices[q[3]]);
-    spheres[t] = cs;
+    offsets[t - begin] = cs.offset;
     for (const std::uint32_t s : q) {
       if (s < n && better(soup, cs.squared_radius, t, best.r2[s], best.tet[s])) {
         best.r2[s] = cs.squared_radius;
@@ -102,9 +121,13 @@ void spheres_and_first_poles(const TetrahedronSoup& soup, std::vector<detail::Ci
 /// Among the tetrahedra [begin, end), each sample's p⁻ candidate (its p⁺ chosen).
 void second_poles(const TetrahedronSoup& soup, const Choice& choice, std::uint32_t begin,
                   std::uint32_t end, std::uint32_t n, Best best) {
+  const unsigned range = choice.range_of(begin);
+  const std::vector<Vec3>& offsets = choice.offsets[range];
+  const std::uint32_t first = choice.range_begin[range];
   for (std::uint32_t t = begin; t < end; ++t) {
     const auto& q = soup.tets[t];
-    const detail::Circumsphere& cs = choice.spheres[t];
+    const Vec3& offset = offsets[t - first];
+    const detail::Circumsphere cs{offset, squared_norm(offset)};  // as choice.sphere(t)
     for (const std::uint32_t s : q) {
       if (s >= n || choice.first[s] == t ||
           !better(soup, cs.squared_radius, t, best.r2[s], best.tet[s])) {
@@ -157,7 +180,6 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
   check_soup(soup);
   const std::size_t n = soup.sample_count;
   Choice choice;
-  choice.spheres.resize(soup.tets.size());
   choice.first.assign(n, kNoTet);
   choice.second.assign(n, kNoTet);
   choice.first_r2.assign(n, -1.0);
@@ -173,13 +195,17 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
       1, std::min<std::size_t>(threads != 0 ? threads : hardware,
                                soup.tets.size() / std::max<std::size_t>(1, tetrahedra_per_thread))));
   const auto samples = static_cast<std::uint32_t>(n);
+  choice.offsets.resize(ranges);
+  for (unsigned k = 0; k <= ranges; ++k) {
+    choice.range_begin.push_back(static_cast<std::uint32_t>(soup.tets.size() * k / ranges));
+  }
   choose_in_ranges(soup, ranges, choice.first, choice.first_r2,
                    [&](std::uint32_t begin, std::uint32_t end, Best best) {
-                     spheres_and_first_poles(soup, choice.spheres, begin, end, samples, best);
+                     spheres_and_first_poles(soup, choice, begin, end, samples, best);
                    });
   for (std::uint32_t s = 0; s < samples; ++s) {
     const std::uint32_t t = choice.first[s];
-    if (t != kNoTet) choice.first_direction[s] = direction(soup, choice.spheres[t], t, s);
+    if (t != kNoTet) choice.first_direction[s] = direction(soup, choice.sphere(t), t, s);
   }
   choose_in_ranges(soup, ranges, choice.second, choice.second_r2,
                    [&](std::uint32_t begin, std::uint32_t end, Best best) {
@@ -244,7 +270,7 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
       for (int which = 0; which < 2; ++which) {
         if ((owns[s] >> which & 1u) == 0) continue;
         const std::uint32_t t = chosen(s, which);
-        const detail::Circumsphere& cs = choice.spheres[t];
+        const detail::Circumsphere cs = choice.sphere(t);
         poles.centre[next] = soup.vertices[soup.tets[t][0]] + cs.offset;
         poles.radius[next] = std::sqrt(cs.squared_radius);
         poles.tet[next] = t;
