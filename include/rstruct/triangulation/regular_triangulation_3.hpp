@@ -177,7 +177,6 @@ struct ValidityReport {
   explicit operator bool() const { return ok; }
 };
 
-/// Regular triangulation of weighted points in R³ (Delaunay when unweighted).
 /// The vertex quadruples of a triangulation's finite cells, stored in the memory of its
 /// cell array (RegularTriangulation3::take_finite_cells): for callers that need only the
 /// tetrahedra, without a second array of their size (10^6 points on a torus: 330 MB that
@@ -201,6 +200,7 @@ class CellQuadruples {
   std::size_t size_ = 0;
 };
 
+/// Regular triangulation of weighted points in R³ (Delaunay when unweighted).
 class RegularTriangulation3 {
  public:
   /// Delaunay triangulation of `points` (all weights zero; in-sphere fast path).
