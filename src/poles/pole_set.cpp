@@ -40,27 +40,31 @@ void check_soup(const TetrahedronSoup& soup) {
   }
 }
 
+/// The first tetrahedron of range k when m tetrahedra are cut into `ranges` ranges.
+std::uint32_t range_start(std::size_t m, unsigned ranges, unsigned k) {
+  return static_cast<std::uint32_t>(m * k / ranges);
+}
+
 /// Per sample: the incident tetrahedra chosen as p⁺ and p⁻ (kNoTet if none), and the
 /// vector p⁺ − s.
 struct Choice {
   /// Per tetrahedron, its circumcentre's offset (Circumsphere::offset; the squared radius
   /// is its squared norm, computed again where needed: the same value, in three quarters
-  /// of the memory), in one array per range of tetrahedra (range_begin[k] to
-  /// range_begin[k + 1]), each allocated and filled by its range's thread. Smaller arrays
-  /// fit more often in pages freed earlier (see analyse_poles).
+  /// of the memory), in one array per range of tetrahedra (see range_start), each
+  /// allocated and filled by its range's thread. Smaller arrays fit more often in pages
+  /// freed earlier (see analyse_poles).
   std::vector<std::vector<Vec3>> offsets;
-  std::vector<std::uint32_t> range_begin;
-  unsigned range_of(std::uint32_t t) const {
-    const auto last = static_cast<unsigned>(offsets.size() - 1);
-    unsigned k = 0;
-    while (k < last && t >= range_begin[k + 1]) ++k;
-    return k;
-  }
-  detail::Circumsphere sphere(std::uint32_t t) const {
-    const unsigned k = range_of(t);
-    const Vec3& offset = offsets[k][t - range_begin[k]];
+  std::size_t tetrahedra = 0;
+  static detail::Circumsphere sphere_of(const Vec3& offset) {
     return {offset, squared_norm(offset)};
   }
+  /// The sphere of tetrahedron t (its range found by a scan: not for every tetrahedron).
+  detail::Circumsphere sphere(std::uint32_t t) const {
+    unsigned k = 0;
+    while (k + 1 < ranges() && t >= range_start(tetrahedra, ranges(), k + 1)) ++k;
+    return sphere_of(offsets[k][t - range_start(tetrahedra, ranges(), k)]);
+  }
+  unsigned ranges() const { return static_cast<unsigned>(offsets.size()); }
   std::vector<std::uint32_t> first, second;
   std::vector<double> first_r2, second_r2;
   std::vector<Vec3> first_direction;
@@ -100,9 +104,9 @@ struct Best {
 
 /// Circumspheres of the tetrahedra [begin, end), and among them each sample's p⁺
 /// candidate.
-void spheres_and_first_poles(const TetrahedronSoup& soup, Choice& choice, std::uint32_t begin,
-                             std::uint32_t end, std::uint32_t n, Best best) {
-  std::vector<Vec3>& offsets = choice.offsets[choice.range_of(begin)];
+void spheres_and_first_poles(const TetrahedronSoup& soup, Choice& choice, unsigned range,
+                             std::uint32_t begin, std::uint32_t end, std::uint32_t n, Best best) {
+  std::vector<Vec3>& offsets = choice.offsets[range];
   offsets.resize(end - begin);
   for (std::uint32_t t = begin; t < end; ++t) {
     const auto& q = soup.tets[t];
@@ -119,15 +123,12 @@ void spheres_and_first_poles(const TetrahedronSoup& soup, Choice& choice, std::u
 }
 
 /// Among the tetrahedra [begin, end), each sample's p⁻ candidate (its p⁺ chosen).
-void second_poles(const TetrahedronSoup& soup, const Choice& choice, std::uint32_t begin,
-                  std::uint32_t end, std::uint32_t n, Best best) {
-  const unsigned range = choice.range_of(begin);
+void second_poles(const TetrahedronSoup& soup, const Choice& choice, unsigned range,
+                  std::uint32_t begin, std::uint32_t end, std::uint32_t n, Best best) {
   const std::vector<Vec3>& offsets = choice.offsets[range];
-  const std::uint32_t first = choice.range_begin[range];
   for (std::uint32_t t = begin; t < end; ++t) {
     const auto& q = soup.tets[t];
-    const Vec3& offset = offsets[t - first];
-    const detail::Circumsphere cs{offset, squared_norm(offset)};  // as choice.sphere(t)
+    const detail::Circumsphere cs = Choice::sphere_of(offsets[t - begin]);
     for (const std::uint32_t s : q) {
       if (s >= n || choice.first[s] == t ||
           !better(soup, cs.squared_radius, t, best.r2[s], best.tet[s])) {
@@ -141,10 +142,11 @@ void second_poles(const TetrahedronSoup& soup, const Choice& choice, std::uint32
   }
 }
 
-/// Runs `pass` over the tetrahedra in `ranges` consecutive ranges, each with a choice per
-/// sample of its own (range 0 writes `tet`, `r2` directly), then keeps for each sample the
-/// best of the ranges' choices, earlier ranges first: the same choice as one pass over all
-/// tetrahedra, since `better` orders them (and keeps the first of equal copies).
+/// Runs pass(k, begin, end, best) over the tetrahedra in `ranges` consecutive ranges
+/// (range_start), range k on thread k, each with a choice per sample of its own (range 0
+/// writes `tet`, `r2` directly), then keeps for each sample the best of the ranges'
+/// choices, earlier ranges first: the same choice as one pass over all tetrahedra, since
+/// `better` orders them (and keeps the first of equal copies).
 template <class Pass>
 void choose_in_ranges(const TetrahedronSoup& soup, unsigned ranges, std::vector<std::uint32_t>& tet,
                       std::vector<double>& r2, Pass&& pass) {
@@ -159,8 +161,7 @@ void choose_in_ranges(const TetrahedronSoup& soup, unsigned ranges, std::vector<
       r2s[k - 1].assign(n, -1.0);
       best = {tets[k - 1].data(), r2s[k - 1].data()};
     }
-    pass(static_cast<std::uint32_t>(m * k / ranges),
-         static_cast<std::uint32_t>(m * (k + 1) / ranges), best);
+    pass(k, range_start(m, ranges, k), range_start(m, ranges, k + 1), best);
   });
   for (unsigned k = 1; k < ranges; ++k) {
     for (std::size_t s = 0; s < n; ++s) {
@@ -196,20 +197,18 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
                                soup.tets.size() / std::max<std::size_t>(1, tetrahedra_per_thread))));
   const auto samples = static_cast<std::uint32_t>(n);
   choice.offsets.resize(ranges);
-  for (unsigned k = 0; k <= ranges; ++k) {
-    choice.range_begin.push_back(static_cast<std::uint32_t>(soup.tets.size() * k / ranges));
-  }
+  choice.tetrahedra = soup.tets.size();
   choose_in_ranges(soup, ranges, choice.first, choice.first_r2,
-                   [&](std::uint32_t begin, std::uint32_t end, Best best) {
-                     spheres_and_first_poles(soup, choice, begin, end, samples, best);
+                   [&](unsigned k, std::uint32_t begin, std::uint32_t end, Best best) {
+                     spheres_and_first_poles(soup, choice, k, begin, end, samples, best);
                    });
   for (std::uint32_t s = 0; s < samples; ++s) {
     const std::uint32_t t = choice.first[s];
     if (t != kNoTet) choice.first_direction[s] = direction(soup, choice.sphere(t), t, s);
   }
   choose_in_ranges(soup, ranges, choice.second, choice.second_r2,
-                   [&](std::uint32_t begin, std::uint32_t end, Best best) {
-                     second_poles(soup, choice, begin, end, samples, best);
+                   [&](unsigned k, std::uint32_t begin, std::uint32_t end, Best best) {
+                     second_poles(soup, choice, k, begin, end, samples, best);
                    });
 
   // Distinct poles, numbered in the order of their owners (the smallest sample having
