@@ -358,10 +358,39 @@ void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
     for (const VertexId p : deferred) lists[owner_store_[p]].push_back(p);  // rank order
     deferred = parallel_pass(lists, end - deferred.size(), false);
   }
-  // The rest, in rank order (along the curve), one by one.
-  for (const VertexId p : deferred) insert(p);
+  insert_deferred(deferred);
   t_.stats_.deferred_points += deferred.size();
   t_.processed_ = end;
+}
+
+// The rest, in rank order (along the curve), one by one. The points are sparse (10^6
+// points on a torus, two workers: about 10^4 in the last round), so the walk from the
+// previous one is long; where a point's last attempt gave up, its walk had come near it,
+// and that cell, if it still exists (a cell since reused lies near the worker's later
+// points: its free cells are reused first), is often a nearer start.
+void Builder::insert_deferred(const std::vector<VertexId>& deferred) {
+  // The latest cell of each point (a point can be deferred by several passes).
+  std::stable_sort(deferred_cells_.begin(), deferred_cells_.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::size_t h = 0;
+  for (const VertexId p : deferred) {
+    CellId hint = kNoCell;
+    while (h < deferred_cells_.size() && deferred_cells_[h].first <= p) {
+      if (deferred_cells_[h].first == p) hint = deferred_cells_[h].second;
+      ++h;
+    }
+    if (hint != kNoCell && t_.is_cell(hint) && t_.infinite_index(hint) < 0) {
+      const Point3& q = points_[p];
+      const CellId previous = star_is_latest_ ? nearest_star_cell(q, last_) : last_;
+      if (!t_.is_cell(previous) || t_.infinite_index(previous) >= 0 ||
+          centroid_distance(hint, q) < centroid_distance(previous, q)) {
+        last_ = hint;
+        star_is_latest_ = false;
+      }
+    }
+    insert(p);
+  }
+  deferred_cells_.clear();
 }
 
 // One parallel pass: worker w inserts lists[w] (increasing ranks) with owner_store_ telling
@@ -451,6 +480,7 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
     b.region_end_ = static_cast<CellId>(region[w + 1]);
     b.exhausted_ = false;
     b.deferred_.clear();
+    b.deferred_cell_.clear();
   }
   {
     std::array<std::exception_ptr, 8> errors{};
@@ -494,6 +524,9 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
     deferred.insert(deferred.end(), lists[w].begin(),
                     lists[w].begin() + static_cast<std::ptrdiff_t>(from[w]));
     deferred.insert(deferred.end(), b.deferred_.begin(), b.deferred_.end());
+    for (std::size_t i = 0; i < b.deferred_.size(); ++i) {
+      deferred_cells_.emplace_back(b.deferred_[i], b.deferred_cell_[i]);
+    }
     if (w == 0) continue;
     if (b.own_free_head_ != kNoCell) {
       CellId tail = b.own_free_head_;
@@ -551,6 +584,7 @@ void Builder::run_worker(const std::vector<VertexId>& list, std::size_t from, Ce
         retry_.push_back({i, p});
       } else {
         deferred_.push_back(p);
+        deferred_cell_.push_back(last_);
       }
     }
   };
@@ -1152,13 +1186,7 @@ CellId Builder::nearest_star_cell(const Point3& q, CellId fallback) const {
         (k.v[2] == kInfiniteVertex) | (k.v[3] == kInfiniteVertex)) {
       continue;
     }
-    // Four times the centroid minus 4q.
-    double d2 = 0;
-    for (std::size_t a = 0; a < 3; ++a) {
-      const double d = points_[k.v[0]][a] + points_[k.v[1]][a] + points_[k.v[2]][a] +
-                       points_[k.v[3]][a] - 4 * q[a];
-      d2 += d * d;
-    }
+    const double d2 = centroid_distance(n, q);
     if (d2 < best_distance) {
       best_distance = d2;
       best = n;

@@ -273,6 +273,25 @@ class Builder {
   bool parallel_futile_ = false;           // a pass deferred too much: sequential from now
   double growth_rate_ = 0;                 // live cells per point over the last stretch
   std::vector<VertexId> deferred_;
+  std::vector<CellId> deferred_cell_;      // per deferred_ point: last_ when it was deferred
+  /// Main builder: (point, cell) of the current round's deferred points, where each was
+  /// given up (see insert_deferred).
+  std::vector<std::pair<VertexId, CellId>> deferred_cells_;
+  /// Inserts a round's remaining deferred points one by one, each walk starting at the cell
+  /// where the point was given up when that is nearer than the previous star.
+  void insert_deferred(const std::vector<VertexId>& deferred);
+  /// Squared distance from 4q to the sum of finite cell c's vertices (16 times that from q
+  /// to the centroid; floating point: it only chooses where a walk starts).
+  double centroid_distance(CellId c, const Point3& q) const {
+    const Cell& k = t_.cells_[c];
+    double d2 = 0;
+    for (std::size_t a = 0; a < 3; ++a) {
+      const double d = points_[k.v[0]][a] + points_[k.v[1]][a] + points_[k.v[2]][a] +
+                       points_[k.v[3]][a] - 4 * q[a];
+      d2 += d * d;
+    }
+    return d2;
+  }
   std::vector<std::unique_ptr<Builder>> helpers_;
 };
 
