@@ -380,13 +380,13 @@ void Builder::insert_deferred(const std::vector<VertexId>& deferred) {
       ++h;
     }
     if (hint != kNoCell && t_.is_cell(hint) && t_.infinite_index(hint) < 0) {
+      // The start locate_conflict would take, or the hint if that is nearer.
       const Point3& q = points_[p];
       const CellId previous = star_is_latest_ ? nearest_star_cell(q, last_) : last_;
-      if (!t_.is_cell(previous) || t_.infinite_index(previous) >= 0 ||
-          centroid_distance(hint, q) < centroid_distance(previous, q)) {
-        last_ = hint;
-        star_is_latest_ = false;
-      }
+      const bool nearer = !t_.is_cell(previous) || t_.infinite_index(previous) >= 0 ||
+                          centroid_distance(hint, q) < centroid_distance(previous, q);
+      last_ = nearer ? hint : previous;
+      star_is_latest_ = false;
     }
     insert(p);
   }
@@ -480,7 +480,6 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
     b.region_end_ = static_cast<CellId>(region[w + 1]);
     b.exhausted_ = false;
     b.deferred_.clear();
-    b.deferred_cell_.clear();
   }
   {
     std::array<std::exception_ptr, 8> errors{};
@@ -523,10 +522,8 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
     }
     deferred.insert(deferred.end(), lists[w].begin(),
                     lists[w].begin() + static_cast<std::ptrdiff_t>(from[w]));
-    deferred.insert(deferred.end(), b.deferred_.begin(), b.deferred_.end());
-    for (std::size_t i = 0; i < b.deferred_.size(); ++i) {
-      deferred_cells_.emplace_back(b.deferred_[i], b.deferred_cell_[i]);
-    }
+    for (const auto& [p, cell] : b.deferred_) deferred.push_back(p);
+    deferred_cells_.insert(deferred_cells_.end(), b.deferred_.begin(), b.deferred_.end());
     if (w == 0) continue;
     if (b.own_free_head_ != kNoCell) {
       CellId tail = b.own_free_head_;
@@ -587,8 +584,7 @@ void Builder::run_worker(const std::vector<VertexId>& list, std::size_t from, Ce
       if (may_retry && locking_ && !exhausted_) {
         retry_.push_back({i, p});
       } else {
-        deferred_.push_back(p);
-        deferred_cell_.push_back(last_);
+        deferred_.emplace_back(p, last_);
       }
     }
   };

@@ -272,10 +272,9 @@ class Builder {
   std::vector<std::pair<std::size_t, VertexId>> retry_;  // (list position, point) to retry
   bool parallel_futile_ = false;           // a pass deferred too much: sequential from now
   double growth_rate_ = 0;                 // live cells per point over the last stretch
-  std::vector<VertexId> deferred_;
-  std::vector<CellId> deferred_cell_;      // per deferred_ point: last_ when it was deferred
-  /// Main builder: (point, cell) of the current round's deferred points, where each was
-  /// given up (see insert_deferred).
+  /// A worker's deferred points, each with last_ when it was given up (near it: see
+  /// insert_deferred); the main builder's gathers those of the current round's passes.
+  std::vector<std::pair<VertexId, CellId>> deferred_;
   std::vector<std::pair<VertexId, CellId>> deferred_cells_;
   /// Inserts a round's remaining deferred points one by one, each walk starting at the cell
   /// where the point was given up when that is nearer than the previous star.
