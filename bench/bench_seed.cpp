@@ -329,7 +329,7 @@ int main(int argc, char** argv) {
     level_times[l].print(title);
   }
   const rstruct::LargeBlockStats blocks = rstruct::large_block_stats();
-  std::printf("large blocks (>= 8 MiB): %llu fresh (%llu of them with freed pages in front), "
+  std::printf("large blocks (>= 8 MiB): %llu fresh (%llu freed ranges moved to their front), "
               "%llu served from freed pages, %llu ranges given back; peak memory %.0f MiB\n",
               static_cast<unsigned long long>(blocks.fresh),
               static_cast<unsigned long long>(blocks.moved),

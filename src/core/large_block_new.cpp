@@ -21,9 +21,9 @@
 // holds it: those pages are already there, so the next stage neither faults them in nor
 // waits while the kernel zeroes them (a 2 MiB huge page is zeroed on its first touch:
 // 10-15 % of the set cover's time on 10^6 torus samples). A request that no cached range
-// holds gets fresh pages with the largest cached range moved to their front, and every
-// other cached range goes back to the system, so the cache never raises the peak: resident
-// memory is at most what it would be without the cache. shrink_large_block() gives the
+// holds gets fresh pages with cached ranges moved to their front, as many as fit (largest
+// first), and every other cached range goes back to the system, so the cache never raises
+// the peak: resident memory is at most what it would be without the cache. shrink_large_block() gives the
 // unused end of a live block to the cache.
 
 #include <algorithm>
@@ -123,34 +123,44 @@ struct LargeBlocks {
     }
   }
 
-  /// A block of `bytes` (more than any cached range holds) from fresh pages, the largest
-  /// cached range moved to its front (mremap moves the pages, already touched, without
-  /// copying them), and every other cached range given back, so that the cache never adds
-  /// to the peak (see the file comment). Giving the whole cache back instead threw away
-  /// pages the next stage then faulted in again: 10^6 torus samples (bench_seed), 18
-  /// fresh blocks, 13 ranges given back.
-  char* map_with_largest_cached(std::size_t bytes) {
-    std::size_t largest = kMaxCached;
+  /// A block of `bytes` (more than any cached range holds) from fresh pages, with cached
+  /// ranges moved to its front one after the other (mremap moves the pages, already
+  /// touched, without copying them): the largest first, then each next largest that still
+  /// fits. The cached ranges that do not fit go back to the system, so the cache never adds
+  /// to the peak (see the file comment). Moving only the largest range and giving the others
+  /// back threw away pages the next stage then faulted in again.
+  char* map_with_cached(std::size_t bytes) {
+    if (cached_count == 0) return map(bytes);
+    std::sort(cached, cached + cached_count,
+              [](const Range& a, const Range& b) { return a.bytes > b.bytes; });
+    Range moving[kMaxCached];
+    std::size_t moving_count = 0;
+    std::size_t filled = 0;
+    std::size_t kept = 0;
     for (std::size_t k = 0; k < cached_count; ++k) {
-      if (largest == kMaxCached || cached[k].bytes > cached[largest].bytes) largest = k;
+      if (filled + cached[k].bytes <= bytes) {
+        moving[moving_count++] = cached[k];
+        filled += cached[k].bytes;
+      } else {
+        cached[kept++] = cached[k];
+      }
     }
-    if (largest == kMaxCached) return map(bytes);
-    const Range moving = cached[largest];
-    cached[largest] = cached[--cached_count];
-    cached_bytes -= moving.bytes;
+    cached_count = kept;
+    cached_bytes -= filled;
     release_cache();
     char* const p = map(bytes);
-    if (p == nullptr) {
-      munmap(moving.p, moving.bytes);
-      ++stats.released;
-      return nullptr;
-    }
     // Both 2 MiB aligned, so the huge pages move whole. On failure the fresh pages stay.
-    if (mremap(moving.p, moving.bytes, moving.bytes, MREMAP_MAYMOVE | MREMAP_FIXED, p) == MAP_FAILED) {
-      munmap(moving.p, moving.bytes);
-      ++stats.released;
-    } else {
-      ++stats.moved;
+    std::size_t offset = 0;
+    for (std::size_t k = 0; k < moving_count; ++k) {
+      const Range r = moving[k];
+      if (p == nullptr ||
+          mremap(r.p, r.bytes, r.bytes, MREMAP_MAYMOVE | MREMAP_FIXED, p + offset) == MAP_FAILED) {
+        munmap(r.p, r.bytes);
+        ++stats.released;
+      } else {
+        ++stats.moved;
+      }
+      offset += r.bytes;
     }
     return p;
   }
@@ -192,7 +202,7 @@ void* allocate_large(std::size_t n) noexcept {
   if (p != nullptr) {
     ++b.stats.reused;
   } else {
-    p = b.map_with_largest_cached(rounded);
+    p = b.map_with_cached(rounded);
     if (p == nullptr) return nullptr;
     ++b.stats.fresh;
   }

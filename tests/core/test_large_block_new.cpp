@@ -148,37 +148,47 @@ TEST_CASE("freed large blocks are served again, carved to size, and merged when 
   ::operator delete(d);
 }
 
-TEST_CASE("a request no cached range holds takes the largest one's pages, gives the rest back") {
+TEST_CASE("a request no cached range holds takes the cached ranges that fit, largest first") {
   empty_cache();
-  // a, gap and c carved in this order from one freed block: a and c are not adjacent.
-  ::operator delete(::operator new(48 * kMiB));
+  // a, gap, c, gap2 and e carved in this order from one freed block: a, c and e are not
+  // adjacent (sizes 16, 24 and 20 MiB).
+  ::operator delete(::operator new(76 * kMiB));
   auto* a = static_cast<unsigned char*>(::operator new(16 * kMiB));
   auto* gap = static_cast<unsigned char*>(::operator new(8 * kMiB));
   auto* c = static_cast<unsigned char*>(::operator new(24 * kMiB));
+  auto* gap2 = static_cast<unsigned char*>(::operator new(8 * kMiB));
+  auto* e = static_cast<unsigned char*>(::operator new(20 * kMiB));
   REQUIRE(c == a + 24 * kMiB);
+  REQUIRE(e == a + 56 * kMiB);
   for (std::size_t i = 0; i < 16 * kMiB; i += 4096) a[i] = static_cast<unsigned char>(i >> 12 | 1);
   for (std::size_t i = 0; i < 24 * kMiB; i += 4096) c[i] = static_cast<unsigned char>(i >> 12 | 2);
+  for (std::size_t i = 0; i < 20 * kMiB; i += 4096) e[i] = static_cast<unsigned char>(i >> 12 | 3);
   ::operator delete(a);
   ::operator delete(c);
+  ::operator delete(e);
   const rstruct::LargeBlockStats s0 = rstruct::large_block_stats();
-  CHECK(s0.cached_bytes == 40 * kMiB);
-  CHECK(s0.cached_blocks == 2);
-  auto* big = static_cast<unsigned char*>(::operator new(64 * kMiB));
+  CHECK(s0.cached_bytes == 60 * kMiB);
+  CHECK(s0.cached_blocks == 3);
+  // 42 MiB: c's range (24) first, then e's (20) does not fit beside it, a's (16) does.
+  auto* big = static_cast<unsigned char*>(::operator new(42 * kMiB));
   const rstruct::LargeBlockStats s1 = rstruct::large_block_stats();
   CHECK(address(big) % kHugePage == 0);
   CHECK(s1.cached_bytes == 0);
   CHECK(s1.fresh == s0.fresh + 1);
-  CHECK(s1.moved == s0.moved + 1);
-  CHECK(s1.released == s0.released + 1);  // a's range
-  // c's pages, moved with their contents to the front; fresh pages after them.
+  CHECK(s1.moved == s0.moved + 2);
+  CHECK(s1.released == s0.released + 1);  // e's range
+  // c's pages, then a's, moved with their contents to the front; fresh pages after them.
   std::size_t wrong = 0;
   for (std::size_t i = 0; i < 24 * kMiB; i += 4096) {
     wrong += big[i] != static_cast<unsigned char>(i >> 12 | 2);
   }
+  for (std::size_t i = 0; i < 16 * kMiB; i += 4096) {
+    wrong += big[24 * kMiB + i] != static_cast<unsigned char>(i >> 12 | 1);
+  }
   CHECK(wrong == 0);
-  for (std::size_t i = 0; i < 64 * kMiB; i += 4096) big[i] = 9;
-  big[64 * kMiB - 1] = 8;
-  CHECK(big[64 * kMiB - 1] == 8);
+  for (std::size_t i = 0; i < 42 * kMiB; i += 4096) big[i] = 9;
+  big[42 * kMiB - 1] = 8;
+  CHECK(big[42 * kMiB - 1] == 8);
   CHECK(big[40 * kMiB] == 9);
   if (transparent_huge_pages_available()) {
     const std::string flags = vm_flags_of(address(big));
@@ -187,6 +197,7 @@ TEST_CASE("a request no cached range holds takes the largest one's pages, gives 
   }
   ::operator delete(big);
   ::operator delete(gap);
+  ::operator delete(gap2);
 }
 
 TEST_CASE("shrink_large_block gives a live block's end to the cache") {

@@ -14,7 +14,8 @@ struct LargeBlockStats {
   std::uint64_t fresh = 0;     ///< large blocks taken from the system
   std::uint64_t reused = 0;    ///< large blocks served from the cache of freed ones
   std::uint64_t released = 0;  ///< cached blocks given back to the system
-  /// Fresh blocks that took a cached range's pages at their front (counted in `fresh` too).
+  /// Cached ranges whose pages were moved to the front of a fresh block (that block is
+  /// counted in `fresh`).
   std::uint64_t moved = 0;
   std::size_t cached_blocks = 0;
   std::size_t cached_bytes = 0;
