@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <numeric>
+#include <thread>
 
 #include "rstruct/core/error.hpp"
+#include "rstruct/core/parallel.hpp"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
@@ -42,6 +45,8 @@ constexpr std::uint32_t kNoIndex = 0xffffffffu;
 /// Below this depth the splits are middle splits; from it on, median splits, which bound
 /// the depth (and the recursion) by about kMaxMiddleDepth + log2(n).
 constexpr unsigned kMaxMiddleDepth = 96;
+/// Subtrees of at least this many points are built on two threads where there are two.
+constexpr std::size_t kParallelPoints = std::size_t{1} << 16;
 
 /// Whether a subtree whose points have squared distances of at least `bound` (computed as
 /// (c₀ + c₁) + c₂ from squared coordinate gaps, each rounded) can be skipped while the
@@ -72,7 +77,7 @@ bool avx2_available() {
 }  // namespace
 
 NearestPointTree::NearestPointTree(std::span<const Point3> points, std::uint32_t leaf_size,
-                                   Scan scan)
+                                   Scan scan, unsigned threads)
     : size_(points.size()),
       leaf_size_(std::max<std::uint32_t>(1, leaf_size)),
       vectorized_(scan == Scan::best && avx2_available()) {
@@ -81,50 +86,66 @@ NearestPointTree::NearestPointTree(std::span<const Point3> points, std::uint32_t
                        " points exceed the supported maximum");
   }
   if (points.empty()) return;
+  const unsigned workers = thread_count(threads, points.size(), kParallelPoints);
   std::vector<std::uint32_t> ids(points.size());
   std::iota(ids.begin(), ids.end(), 0u);
   ids_base_ = ids.data();
   root_box_ = box_of(ids.data(), ids.data() + ids.size(), points);
   nodes_.reserve(4 * (points.size() / leaf_size_) + 1);
-  build(ids.data(), ids.data() + ids.size(), root_box_, root_box_, points, 0);
+  build(nodes_, ids.data(), ids.data() + ids.size(), root_box_, root_box_, points, 0, workers);
   ids_base_ = nullptr;
-  // The leaves' points, leaf after leaf, by coordinate.
-  const std::size_t slots = points.size() + 3 * (nodes_.size() / 2 + 1);
-  x_.reserve(slots);
-  y_.reserve(slots);
-  z_.reserve(slots);
-  index_.reserve(slots);
-  for (Node& node : nodes_) {
-    if (!node.leaf) continue;
-    const std::uint32_t begin = node.first, end = node.last;
-    node.first = static_cast<std::uint32_t>(x_.size());
-    for (std::uint32_t k = begin; k < end; ++k) {
-      const Point3& p = points[ids[k]];
-      x_.push_back(p.x);
-      y_.push_back(p.y);
-      z_.push_back(p.z);
-      index_.push_back(ids[k]);
-    }
-    while (x_.size() % 4 != 0) {
-      x_.push_back(kNaN);
-      y_.push_back(kNaN);
-      z_.push_back(kNaN);
-      index_.push_back(kNoIndex);
-    }
-    node.last = static_cast<std::uint32_t>(x_.size());
+  // The leaves' points, leaf after leaf, by coordinate, each leaf from a multiple of 4.
+  std::vector<std::uint32_t> leaves;
+  std::vector<std::uint32_t> slot;
+  std::size_t slots = 0;
+  for (std::uint32_t k = 0; k < nodes_.size(); ++k) {
+    if (!nodes_[k].leaf) continue;
+    leaves.push_back(k);
+    slot.push_back(static_cast<std::uint32_t>(slots));
+    slots += (nodes_[k].last - nodes_[k].first + 3) / 4 * 4;
   }
+  if (slots >= kNoIndex) {
+    throw InvalidInput("nearest-point tree: " + std::to_string(points.size()) +
+                       " points exceed the supported maximum");
+  }
+  x_.reset(new double[slots]);
+  y_.reset(new double[slots]);
+  z_.reset(new double[slots]);
+  index_.reset(new std::uint32_t[slots]);
+  parallel_chunks(leaves.size(), workers, 256, [&](std::size_t begin, std::size_t end, unsigned) {
+    for (std::size_t l = begin; l < end; ++l) {
+      Node& node = nodes_[leaves[l]];
+      std::uint32_t at = slot[l];
+      for (std::uint32_t k = node.first; k < node.last; ++k, ++at) {
+        const Point3& p = points[ids[k]];
+        x_[at] = p.x;
+        y_[at] = p.y;
+        z_[at] = p.z;
+        index_[at] = ids[k];
+      }
+      for (; at % 4 != 0; ++at) {
+        x_[at] = kNaN;
+        y_[at] = kNaN;
+        z_[at] = kNaN;
+        index_[at] = kNoIndex;
+      }
+      node.first = slot[l];
+      node.last = at;
+    }
+  });
 }
 
 /// Builds the subtree of the ids [first, last), whose points lie in `region` (the cell the
 /// splits above cut out) and span `tight`; returns its node.
-std::uint32_t NearestPointTree::build(std::uint32_t* first, std::uint32_t* last, const Box3& region,
-                                      const Box3& tight, std::span<const Point3> points,
-                                      unsigned depth) {
-  const auto id = static_cast<std::uint32_t>(nodes_.size());
-  nodes_.emplace_back();
+std::uint32_t NearestPointTree::build(std::vector<Node>& nodes, std::uint32_t* first,
+                                      std::uint32_t* last, const Box3& region, const Box3& tight,
+                                      std::span<const Point3> points, unsigned depth,
+                                      unsigned threads) const {
+  const auto id = static_cast<std::uint32_t>(nodes.size());
+  nodes.emplace_back();
   const auto n = static_cast<std::size_t>(last - first);
   if (n <= leaf_size_) {
-    Node& leaf = nodes_[id];
+    Node& leaf = nodes[id];
     leaf.leaf = true;
     leaf.first = static_cast<std::uint32_t>(first - ids_base_);
     leaf.last = static_cast<std::uint32_t>(last - ids_base_);
@@ -163,9 +184,40 @@ std::uint32_t NearestPointTree::build(std::uint32_t* first, std::uint32_t* last,
   Box3 lower_region = region, upper_region = region;
   lower_region.hi[axis] = cut;
   upper_region.lo[axis] = cut;
-  const std::uint32_t lower = build(first, mid, lower_region, lower_tight, points, depth + 1);
-  const std::uint32_t upper = build(mid, last, upper_region, upper_tight, points, depth + 1);
-  Node& node = nodes_[id];
+  std::uint32_t lower = 0;
+  std::uint32_t upper = 0;
+  if (threads > 1 && n >= kParallelPoints) {
+    // The upper subtree on threads / 2 threads of its own, into nodes of its own, appended
+    // after the lower subtree's with its child indices shifted.
+    std::vector<Node> upper_nodes;
+    upper_nodes.reserve(4 * (static_cast<std::size_t>(last - mid) / leaf_size_) + 1);
+    std::exception_ptr error;
+    {
+      std::jthread side([&] {
+        try {
+          build(upper_nodes, mid, last, upper_region, upper_tight, points, depth + 1, threads / 2);
+        } catch (...) {
+          error = std::current_exception();
+        }
+      });
+      lower = build(nodes, first, mid, lower_region, lower_tight, points, depth + 1,
+                    threads - threads / 2);
+    }
+    if (error) std::rethrow_exception(error);
+    const auto shift = static_cast<std::uint32_t>(nodes.size());
+    for (Node& x : upper_nodes) {
+      if (!x.leaf) {
+        x.first += shift;
+        x.last += shift;
+      }
+    }
+    nodes.insert(nodes.end(), upper_nodes.begin(), upper_nodes.end());
+    upper = shift;  // the upper subtree's root came first in upper_nodes
+  } else {
+    lower = build(nodes, first, mid, lower_region, lower_tight, points, depth + 1, 1);
+    upper = build(nodes, mid, last, upper_region, upper_tight, points, depth + 1, 1);
+  }
+  Node& node = nodes[id];
   node.axis = static_cast<std::uint8_t>(axis);
   node.low = lower_tight.hi[axis];
   node.high = upper_tight.lo[axis];
@@ -242,9 +294,9 @@ __attribute__((target("avx2"))) void NearestPointTree::scan_leaf_avx2(const Node
   const __m256d qy = _mm256_set1_pd(q[1]);
   const __m256d qz = _mm256_set1_pd(q[2]);
   for (std::uint32_t k = node.first; k < node.last; k += 4) {
-    const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(x_.data() + k), qx);
-    const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(y_.data() + k), qy);
-    const __m256d dz = _mm256_sub_pd(_mm256_loadu_pd(z_.data() + k), qz);
+    const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(x_.get() + k), qx);
+    const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(y_.get() + k), qy);
+    const __m256d dz = _mm256_sub_pd(_mm256_loadu_pd(z_.get() + k), qz);
     const __m256d d2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
                                      _mm256_mul_pd(dz, dz));
     // Candidates: d2 ≤ best (NaN padding compares false); the rare ones are resolved in

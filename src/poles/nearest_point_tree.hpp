@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -33,10 +34,13 @@ class NearestPointTree {
   /// How leaves are scanned: the best the processor supports, or plain C++.
   enum class Scan { best, portable };
 
-  /// Builds the tree over a copy of `points` (finite coordinates; the caller checks).
+  /// Builds the tree over a copy of `points` (finite coordinates; the caller checks), on
+  /// up to `threads` threads (0: hardware concurrency): subtrees below the first splits are
+  /// built side by side. The tree does not depend on the thread count.
   /// \pre points.size() < 2^32 − 1.
   explicit NearestPointTree(std::span<const Point3> points,
-                            std::uint32_t leaf_size = kDefaultLeafSize, Scan scan = Scan::best);
+                            std::uint32_t leaf_size = kDefaultLeafSize, Scan scan = Scan::best,
+                            unsigned threads = 1);
 
   std::size_t size() const { return size_; }
   /// Whether queries use the vector (AVX2) scan.
@@ -64,8 +68,11 @@ class NearestPointTree {
     std::uint32_t index;
   };
 
-  std::uint32_t build(std::uint32_t* first, std::uint32_t* last, const Box3& region,
-                      const Box3& tight, std::span<const Point3> points, unsigned depth);
+  /// Appends the subtree of the ids [first, last) to `nodes`; returns its root's index.
+  /// Up to `threads` threads build its subtrees.
+  std::uint32_t build(std::vector<Node>& nodes, std::uint32_t* first, std::uint32_t* last,
+                      const Box3& region, const Box3& tight, std::span<const Point3> points,
+                      unsigned depth, unsigned threads) const;
   void search(std::uint32_t node, const double* q, double* cut, Best& best) const;
   void scan_leaf(const Node& node, const double* q, Best& best) const;
   void scan_leaf_avx2(const Node& node, const double* q, Best& best) const;
@@ -78,8 +85,10 @@ class NearestPointTree {
   std::vector<Node> nodes_;
   // The points in leaf order, by coordinate, each leaf padded with NaN to a multiple of 4
   // (a NaN distance never compares as small); index_ maps a slot to the point's index.
-  std::vector<double> x_, y_, z_;
-  std::vector<std::uint32_t> index_;
+  // (Arrays without value-initialisation: the threads that fill them touch their pages
+  // first, instead of one thread zeroing them all.)
+  std::unique_ptr<double[]> x_, y_, z_;
+  std::unique_ptr<std::uint32_t[]> index_;
 };
 
 }  // namespace rstruct::poles::detail

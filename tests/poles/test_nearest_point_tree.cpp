@@ -2,7 +2,8 @@
 // a linear scan in index order returns: the smallest squared distance as
 // rstruct::squared_distance computes it, the smallest index among equal ones. Checked on
 // random, clustered, duplicate-heavy and tie-heavy sets, at extreme scales, with every leaf
-// size and both leaf scans, from no start and from a given one.
+// size and both leaf scans, from no start and from a given one; trees built on one thread
+// and on several.
 
 #include <rapidcheck/catch.h>
 
@@ -156,6 +157,38 @@ TEST_CASE("nearest point: equidistant points in different subtrees, smallest ind
           }
         }
         CHECK(tree.nearest_from({0, 0, 0}, last_corner, 3.0) == expected);
+      }
+    }
+  }
+}
+
+TEST_CASE("nearest point: a tree built on several threads answers as the scan does") {
+  // Large enough that the first splits build their subtrees on threads of their own (two
+  // levels with four threads), with ties (grid) and thin empty-bordered cells (clusters).
+  for (const Shape shape : {Shape::uniform, Shape::grid, Shape::clustered}) {
+    std::mt19937_64 rng(29 + static_cast<int>(shape));
+    const auto points = make_points(shape, 150'000, 1.0, 0.0, rng);
+    std::vector<Point3> queries = make_points(shape, 150, 1.0, 0.0, rng);
+    if (shape == Shape::grid) {
+      for (Point3& q : queries) q = {q.x + 0.5, q.y + 0.5, q.z};
+    }
+    for (std::size_t k = 0; k < 50; ++k) queries.push_back(points[k * 2999]);
+    std::vector<std::uint32_t> expected;
+    for (const Point3& q : queries) expected.push_back(scan_nearest(points, q));
+    for (const unsigned threads : {2U, 3U, 4U}) {
+      for (const std::uint32_t leaf : {1U, 64U}) {
+        const NearestPointTree tree(points, leaf, NearestPointTree::Scan::best, threads);
+        CHECK(tree.size() == points.size());
+        std::size_t wrong = 0;
+        for (std::size_t k = 0; k < queries.size(); ++k) {
+          wrong += tree.nearest(queries[k]) != expected[k];
+          const std::uint32_t start = static_cast<std::uint32_t>(k * 7919 % points.size());
+          wrong += tree.nearest_from(queries[k], start,
+                                     rstruct::squared_distance(queries[k], points[start])) !=
+                   expected[k];
+        }
+        INFO("shape " << static_cast<int>(shape) << ", threads " << threads << ", leaf " << leaf);
+        CHECK(wrong == 0);
       }
     }
   }
