@@ -7,6 +7,7 @@
 #include <cmath>
 #include <gmpxx.h>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "poles/circumsphere.hpp"
@@ -169,6 +170,51 @@ TEST_CASE("the poles do not depend on the threads choosing them") {
     CHECK(many.sample_poles == one.sample_poles);
     CHECK(many.centre == one.centre);
     CHECK(many.radius == one.radius);
+  }
+}
+
+TEST_CASE("large soups: the same poles on one thread and on several; the first bad tetrahedron") {
+  // Large enough that the checks and the per-sample loops run in several chunks.
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> coordinate(-1, 1);
+  std::uniform_int_distribution<std::uint32_t> vertex(0, 39'999);
+  std::vector<Point3> vertices(40'000);
+  for (Point3& p : vertices) p = {coordinate(rng), coordinate(rng), coordinate(rng)};
+  std::vector<Tet> tets;
+  while (tets.size() < 200'000) {
+    Tet t{vertex(rng), vertex(rng), vertex(rng), vertex(rng)};
+    Tet sorted_ids = t;
+    std::sort(sorted_ids.begin(), sorted_ids.end());
+    if (std::adjacent_find(sorted_ids.begin(), sorted_ids.end()) == sorted_ids.end()) {
+      tets.push_back(t);
+    }
+  }
+  const TetrahedronSoup soup{vertices, 35'000, tets, {}};
+  const PoleSet one = compute_poles(soup, 1);
+  REQUIRE(one.is_valid());
+  for (const unsigned threads : {2u, 4u}) {
+    const PoleSet many = compute_poles(soup, threads);
+    CHECK(many.tet == one.tet);
+    CHECK(many.owner == one.owner);
+    CHECK(many.sites == one.sites);
+    CHECK(many.sample_poles == one.sample_poles);
+    CHECK(many.representative == one.representative);
+    CHECK(many.centre == one.centre);
+    CHECK(many.radius == one.radius);
+    CHECK(many.label == one.label);
+  }
+  // Two tetrahedra with a vertex out of range, in different chunks: the first is named.
+  std::vector<Tet> bad = tets;
+  bad[150'000][2] = 40'000;
+  bad[70'000][1] = 40'001;
+  for (const unsigned threads : {1u, 2u, 4u}) {
+    try {
+      (void)compute_poles({vertices, 35'000, bad, {}}, threads);
+      FAIL("no error for a vertex out of range");
+    } catch (const rstruct::InvalidInput& e) {
+      CHECK(std::string(e.what()).find("tetrahedron 70000 has vertex 40001 out of range") !=
+            std::string::npos);
+    }
   }
 }
 
