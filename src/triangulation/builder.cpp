@@ -404,11 +404,20 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
     helpers_.push_back(std::make_unique<Builder>(*this, static_cast<std::uint8_t>(helpers_.size() + 1)));
   }
   const auto worker = [&](unsigned w) -> Builder& { return w == 0 ? *this : *helpers_[w - 1]; };
+  // With locks, pairs of workers balance their stretches (see run_worker): with fixed
+  // stretches the two workers of the last round of 10^6 torus points ended 0.8-1.5 s apart
+  // (which one is slower changes from round to round and run to run: the cores' speeds in
+  // this VM), one core idle meanwhile.
+  std::array<Claim, 8> claims;
   for (unsigned w = 0; w < k; ++w) {
     Builder& b = worker(w);
     b.owner_ = owner_;
     b.worker_ = static_cast<std::uint8_t>(w);
     b.locking_ = locking;
+    const bool paired = locking && (w ^ 1u) < k;
+    b.own_claim_ = paired ? &claims[w] : nullptr;
+    b.partner_claim_ = paired ? &claims[w ^ 1u] : nullptr;
+    b.partner_list_ = paired ? &lists[w ^ 1u] : nullptr;
   }
   // Each worker's first point whose cell (found by a sequential walk) it owns (without
   // locks) or can lock: there its own walks start. The points before it are deferred.
@@ -434,6 +443,10 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
         break;
       }
     }
+  }
+  for (unsigned w = 0; w < k; ++w) {
+    claims[w].size = lists[w].size();
+    claims[w].taken.store(from[w], std::memory_order_relaxed);  // the points before the start
   }
   // Room for the new cells: per point, the larger of the live cells per vertex so far and
   // the growth over the previous stretch (points on a surface: the cells per point grow
@@ -465,6 +478,9 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
     for (unsigned w = 0; w < k; ++w) {
       worker(w).unlock_all();
       worker(w).locking_ = false;
+      worker(w).own_claim_ = nullptr;
+      worker(w).partner_claim_ = nullptr;
+      worker(w).partner_list_ = nullptr;
       deferred.insert(deferred.end(), lists[w].begin(), lists[w].end());
     }
     std::sort(deferred.begin(), deferred.end());
@@ -522,6 +538,16 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
     }
     deferred.insert(deferred.end(), lists[w].begin(),
                     lists[w].begin() + static_cast<std::ptrdiff_t>(from[w]));
+    if (b.own_claim_ != nullptr) {
+      // Points nobody claimed (the regions ran out).
+      const std::uint64_t taken = claims[w].taken.load(std::memory_order_relaxed);
+      deferred.insert(deferred.end(),
+                      lists[w].begin() + static_cast<std::ptrdiff_t>(taken & 0xffffffffu),
+                      lists[w].end() - static_cast<std::ptrdiff_t>(taken >> 32));
+      b.own_claim_ = nullptr;
+      b.partner_claim_ = nullptr;
+      b.partner_list_ = nullptr;
+    }
     for (const auto& [p, cell] : b.deferred_) deferred.push_back(p);
     deferred_cells_.insert(deferred_cells_.end(), b.deferred_.begin(), b.deferred_.end());
     if (w == 0) continue;
@@ -542,6 +568,7 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
     s.orient_calls += b.own_stats_.orient_calls;
     s.power_test_calls += b.own_stats_.power_test_calls;
     s.large_cavities += b.own_stats_.large_cavities;
+    s.taken_points += b.own_stats_.taken_points;
     b.own_stats_ = {};
   }
   std::sort(deferred.begin(), deferred.end());
@@ -563,16 +590,19 @@ void Builder::run_worker(const std::vector<VertexId>& list, std::size_t from, Ce
   // moved on, and only then deferred to the sequential pass: 10^6 points on a torus, two
   // workers, deferred 6.3 -> 4.4 % and 11.0 -> 10.5 s (medians of 6 interleaved pairs on
   // a slow VM; 4 earlier pairs: 9.06 -> 8.58 s).
-  // Tried: a worker that is done taking the far half of another's remaining stretch (with
-  // locks any worker may insert any point). It balanced the last round's stretches (on
-  // 10^6 torus points they end 0.8-1.3 s apart), but both workers then work in one region
-  // and defer more: 10 interleaved pairs, insertion medians 8.24 -> 8.46 s.
+  // With locks any worker may insert any point, so a worker that is done with its stretch
+  // takes its partner's remaining points from the far end, towards the partner (on 10^6
+  // torus points the last round's two stretches ended 0.8-1.5 s apart). Tried before: the
+  // far half of the other's remaining stretch, again and again, which brought the two
+  // into one region early and deferred more: 10 interleaved pairs, insertion medians 8.24
+  // -> 8.46 s.
   constexpr std::size_t kRetryDelay = 16;
   constexpr int kAtOnce = 4;
   constexpr int kPauses = 20;
   retry_.clear();
   std::size_t retry_head = 0;
-  const auto attempt = [&](VertexId p, bool may_retry, std::size_t i) {
+  std::size_t attempts = 0;
+  const auto attempt = [&](VertexId p, bool may_retry) {
     bool inserted = !exhausted_ && insert_owned(p);
     for (int t = 0; !inserted && locking_ && !exhausted_ && t < kAtOnce; ++t) {
       unlock_attempt();
@@ -582,22 +612,80 @@ void Builder::run_worker(const std::vector<VertexId>& list, std::size_t from, Ce
     if (!inserted) {
       if (locking_) unlock_attempt();
       if (may_retry && locking_ && !exhausted_) {
-        retry_.push_back({i, p});
+        retry_.push_back({attempts, p});
       } else {
         deferred_.emplace_back(p, last_);
       }
     }
   };
-  for (std::size_t i = from; i < list.size(); ++i) {
-    next_point_ = i + 1 < list.size() ? list[i + 1] : kInfiniteVertex;
-    attempt(list[i], true, i);
-    while (retry_head < retry_.size() && retry_[retry_head].first + kRetryDelay <= i) {
-      attempt(retry_[retry_head++].second, false, i);
+  // p, then the retries that are due; `next` is the point after p (kInfiniteVertex if
+  // unknown), near which insert_owned keeps its locks.
+  const auto take = [&](VertexId p, VertexId next) {
+    next_point_ = next;
+    attempt(p, true);
+    ++attempts;
+    while (retry_head < retry_.size() && retry_[retry_head].first + kRetryDelay <= attempts) {
+      attempt(retry_[retry_head++].second, false);
+    }
+  };
+  if (own_claim_ == nullptr) {
+    for (std::size_t i = from; i < list.size(); ++i) {
+      take(list[i], i + 1 < list.size() ? list[i + 1] : kInfiniteVertex);
+    }
+  } else {
+    // The own stretch from the front, a block at a time.
+    std::size_t end = from;
+    for (std::size_t i = from;; ++i) {
+      if (i >= end && (exhausted_ || !claim_more(*own_claim_, false, 0, end))) break;
+      // (The next point is nearly always this worker's too: the partner takes points from
+      // the far end only.)
+      take(list[i], i + 1 < list.size() ? list[i + 1] : kInfiniteVertex);
+    }
+    // Then the partner's from the back, towards the partner (the partner's walks come from
+    // the other side: the two meet only at the end).
+    // (A worker that found no start holds no cell to walk from: it takes nothing.)
+    if (partner_claim_ != nullptr && from < list.size()) {
+      const std::vector<VertexId>& other = *partner_list_;
+      std::size_t back = 0;
+      for (std::size_t j = 0;; ++j) {
+        if (j >= back &&
+            (exhausted_ || !claim_more(*partner_claim_, true, options_.parallel_steal_gap, back))) {
+          break;
+        }
+        const std::size_t at = other.size() - 1 - j;
+        take(other[at], at > 0 ? other[at - 1] : kInfiniteVertex);
+        ++stats_->taken_points;
+      }
     }
   }
   next_point_ = kInfiniteVertex;
-  while (retry_head < retry_.size()) attempt(retry_[retry_head++].second, false, 0);
+  while (retry_head < retry_.size()) attempt(retry_[retry_head++].second, false);
   if (locking_) unlock_all();
+}
+
+bool Builder::claim_more(Claim& claim, bool back, std::size_t gap, std::size_t& end) {
+  std::uint64_t taken = claim.taken.load(std::memory_order_relaxed);
+  for (;;) {
+    const std::size_t front_count = taken & 0xffffffffu;
+    const std::size_t back_count = taken >> 32;
+    const std::size_t mine = back ? back_count : front_count;
+    const std::size_t other = back ? front_count : back_count;
+    RSTRUCT_DEBUG_ASSERT(mine == end);
+    // Two workers that near each other keep each other out: 1.2·10^5 torus points, two
+    // workers (test_parallel_workload, 3 runs of 3 triangulations each), deferred
+    // 0.38-0.57 % when a worker takes points until the two meet; with a gap of 4,096
+    // points the deferrals are those of workers that take nothing, within the noise (per
+    // triangulation 77-810 points against 80-943, 9 runs each on a loaded VM).
+    if (mine + other + (back ? gap : 0) >= claim.size) return false;
+    const std::uint64_t next = std::min(mine + kClaimBlock, claim.size - other);
+    const std::uint64_t updated = back ? (taken & 0xffffffffu) | next << 32
+                                       : (taken & ~std::uint64_t{0xffffffffu}) | next;
+    // Relaxed: the claims only split the points; the vertex locks order the insertions.
+    if (claim.taken.compare_exchange_weak(taken, updated, std::memory_order_relaxed)) {
+      end = next;
+      return true;
+    }
+  }
 }
 
 void Builder::unlock_attempt() {

@@ -58,8 +58,24 @@ class Builder {
   /// Renumbers the live cells in the canonical order (see TriangulationOptions) and drops
   /// the free ones; the hidden records' hint cells follow.
   void canonicalize_cells();
-  /// The worker's points list[from..], those it cannot insert appended to deferred_.
+  /// The worker's points list[from..] (with claims, those it claims; then, with a partner,
+  /// some of the partner's from the back), those it cannot insert appended to deferred_.
   void run_worker(const std::vector<VertexId>& list, std::size_t from, CellId start);
+  /// In a pass with locks the workers go in pairs (2s, 2s + 1), each inserting its own
+  /// stretch from the front; one that is done inserts its partner's remaining points from
+  /// the back, towards the partner (see parallel_pass). A stretch's points are claimed
+  /// kClaimBlock at a time, from either end.
+  struct Claim {
+    std::atomic<std::uint64_t> taken{0};  // points claimed from the front (low 32 bits)
+                                          // and from the back (high 32 bits)
+    std::size_t size = 0;                 // the stretch's points
+  };
+  static constexpr std::size_t kClaimBlock = 64;
+  /// Claims the next block of `claim` from the front or (a partner's stretch) the back;
+  /// `end` (this worker's count from that end so far) moves past it. False when every
+  /// point is claimed, or from the back, when at most `gap` are left
+  /// (TriangulationOptions::parallel_steal_gap).
+  static bool claim_more(Claim& claim, bool back, std::size_t gap, std::size_t& end);
   /// Walk through owned cells only (see walk()); `blocked` when the next cell is not owned.
   CellId walk_owned(const Point3& q, CellId start, bool& blocked);
   /// With locks: keeps only the locks of cell c, which becomes the start of the next walk.
@@ -269,7 +285,10 @@ class Builder {
   CellId region_next_ = 0;
   CellId region_end_ = 0;
   bool exhausted_ = false;                 // the region ran out during this pass
-  std::vector<std::pair<std::size_t, VertexId>> retry_;  // (list position, point) to retry
+  std::vector<std::pair<std::size_t, VertexId>> retry_;  // (attempt number, point) to retry
+  Claim* own_claim_ = nullptr;        // the worker's stretch's claims (null: all its own)
+  Claim* partner_claim_ = nullptr;    // the partner's, if any
+  const std::vector<VertexId>* partner_list_ = nullptr;
   bool parallel_futile_ = false;           // a pass deferred too much: sequential from now
   double growth_rate_ = 0;                 // live cells per point over the last stretch
   /// A worker's deferred points, each with last_ when it was given up (near it: see

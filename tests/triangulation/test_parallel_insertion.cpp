@@ -28,12 +28,14 @@ using rstruct::test::with_duplicates;
 using Scheme = TriangulationOptions::ParallelScheme;
 
 RegularTriangulation3 build(const Input& in, unsigned threads, std::size_t min_round,
-                            Scheme scheme = Scheme::automatic, bool canonical = false) {
+                            Scheme scheme = Scheme::automatic, bool canonical = false,
+                            std::size_t steal_gap = TriangulationOptions{}.parallel_steal_gap) {
   TriangulationOptions options;
   options.threads = threads;
   options.parallel_min_round = min_round;
   options.parallel_scheme = scheme;
   options.canonical_order = canonical;
+  options.parallel_steal_gap = steal_gap;
   return rstruct::test::build(in, options);
 }
 
@@ -128,6 +130,30 @@ TEST_CASE("parallel insertion with locks: weighted points on a surface, some hid
   CHECK(t.hidden_points().size() > 100);
   check_same(in, 2, 2000);
   check_same(in, 3, 2000);
+}
+
+TEST_CASE("locks: a thread done with its stretch takes its partner's points from the far end") {
+  // Without the gap a thread takes its partner's points until the two meet, so nearly
+  // every pass has some taken (how many depends on timing): 2 threads (one pair), 3 (a
+  // pair and one alone) and 4 (two pairs), points on a surface, weighted with some hidden.
+  const std::size_t n = 30000;
+  const Input surface{torus_points(n, 41), {}};
+  const Input weighted{torus_points(n, 42), rstruct::test::hiding_weights(n, 2e-3, 43)};
+  std::uint64_t taken = 0;
+  for (const Input& in : {surface, weighted}) {
+    const RegularTriangulation3 one = build(in, 1, 2000);
+    for (const unsigned threads : {2u, 3u, 4u}) {
+      const RegularTriangulation3 many = build(in, threads, 2000, Scheme::locks, false, 0);
+      const auto report = many.is_valid();
+      INFO(threads << " threads: " << report.message);
+      REQUIRE(report.ok);
+      CHECK(cell_set(many) == cell_set(one));
+      CHECK(hidden_ids(many) == hidden_ids(one));
+      taken += many.stats().taken_points;
+      CHECK(many.stats().taken_points < many.stats().parallel_points);
+    }
+  }
+  CHECK(taken > 0);
 }
 
 TEST_CASE("parallel insertion with locks: uniform points, a grid, duplicates") {
@@ -287,6 +313,7 @@ TEST_CASE("parallel insertion equals sequential on degenerate inputs") {
     parallel.threads = threads;
     parallel.parallel_min_round = 100;
     parallel.parallel_scheme = locks ? Scheme::locks : Scheme::borders;
+    parallel.parallel_steal_gap = *rc::gen::element<std::size_t>(0, 64, 4096);
     parallel.canonical_order = true;
     const RegularTriangulation3 one = rstruct::test::build(in, sequential);
     const RegularTriangulation3 many = rstruct::test::build(in, parallel);

@@ -142,6 +142,10 @@ struct TriangulationOptions {
   /// `borders` and `locks` keep to one (tests and benchmarks compare them).
   enum class ParallelScheme : std::uint8_t { automatic, borders, locks };
   ParallelScheme parallel_scheme = ParallelScheme::automatic;
+  /// With locks, the threads go in pairs: one that is done with its stretch inserts its
+  /// partner's remaining points from the far end, and stops this many points before the
+  /// partner (two threads that near each other keep each other out). Tests set 0.
+  std::size_t parallel_steal_gap = 4096;
   /// Number the cells in the canonical order at the end: by their smallest vertex id, then
   /// by their other vertex ids (within a cell: the two smallest ids first, increasing, then
   /// the order that keeps the orientation). The cell array then depends only on the
@@ -168,6 +172,7 @@ struct TriangulationStats {
   unsigned threads = 1;                  ///< threads that inserted points
   std::uint64_t parallel_points = 0;     ///< points processed by the parallel passes
   std::uint64_t deferred_points = 0;     ///< points the parallel passes left to the sequential one
+  std::uint64_t taken_points = 0;        ///< points a thread took from its partner's stretch
 };
 
 /// The result of is_valid(): ok, or the first violated property in words.
