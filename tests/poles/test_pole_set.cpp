@@ -55,6 +55,18 @@ std::vector<Tet> random_tetrahedra(std::mt19937_64& rng, std::vector<Point3>& ve
   return tets;
 }
 
+/// Every field of two pole sets.
+void check_same_poles(const PoleSet& many, const PoleSet& one) {
+  CHECK(many.tet == one.tet);
+  CHECK(many.owner == one.owner);
+  CHECK(many.sites == one.sites);
+  CHECK(many.sample_poles == one.sample_poles);
+  CHECK(many.representative == one.representative);
+  CHECK(many.centre == one.centre);
+  CHECK(many.radius == one.radius);
+  CHECK(many.label == one.label);
+}
+
 }  // namespace
 
 TEST_CASE("first pole is the largest incident circumball, second the largest opposite one") {
@@ -164,12 +176,8 @@ TEST_CASE("the poles do not depend on the threads choosing them") {
   REQUIRE(one.is_valid());
   REQUIRE(one.size() > 100);
   for (const unsigned threads : {2u, 3u}) {
-    const PoleSet many = compute_poles(soup, threads, 1);  // one range of tetrahedra per thread
-    CHECK(many.tet == one.tet);
-    CHECK(many.owner == one.owner);
-    CHECK(many.sample_poles == one.sample_poles);
-    CHECK(many.centre == one.centre);
-    CHECK(many.radius == one.radius);
+    // One range of tetrahedra per thread.
+    check_same_poles(compute_poles(soup, threads, 1), one);
   }
 }
 
@@ -193,15 +201,7 @@ TEST_CASE("large soups: the same poles on one thread and on several; the first b
   const PoleSet one = compute_poles(soup, 1);
   REQUIRE(one.is_valid());
   for (const unsigned threads : {2u, 4u}) {
-    const PoleSet many = compute_poles(soup, threads);
-    CHECK(many.tet == one.tet);
-    CHECK(many.owner == one.owner);
-    CHECK(many.sites == one.sites);
-    CHECK(many.sample_poles == one.sample_poles);
-    CHECK(many.representative == one.representative);
-    CHECK(many.centre == one.centre);
-    CHECK(many.radius == one.radius);
-    CHECK(many.label == one.label);
+    check_same_poles(compute_poles(soup, threads), one);
   }
   // Two tetrahedra with a vertex out of range, in different chunks: the first is named.
   std::vector<Tet> bad = tets;
