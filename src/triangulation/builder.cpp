@@ -415,7 +415,7 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
     b.worker_ = static_cast<std::uint8_t>(w);
     b.locking_ = locking;
     const bool paired = locking && (w ^ 1u) < k;
-    b.own_claim_ = paired ? &claims[w] : nullptr;
+    b.own_claim_ = &claims[w];
     b.partner_claim_ = paired ? &claims[w ^ 1u] : nullptr;
     b.partner_list_ = paired ? &lists[w ^ 1u] : nullptr;
   }
@@ -478,9 +478,7 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
     for (unsigned w = 0; w < k; ++w) {
       worker(w).unlock_all();
       worker(w).locking_ = false;
-      worker(w).own_claim_ = nullptr;
-      worker(w).partner_claim_ = nullptr;
-      worker(w).partner_list_ = nullptr;
+      worker(w).forget_claims();
       deferred.insert(deferred.end(), lists[w].begin(), lists[w].end());
     }
     std::sort(deferred.begin(), deferred.end());
@@ -538,16 +536,12 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
     }
     deferred.insert(deferred.end(), lists[w].begin(),
                     lists[w].begin() + static_cast<std::ptrdiff_t>(from[w]));
-    if (b.own_claim_ != nullptr) {
-      // Points nobody claimed (the regions ran out).
-      const std::uint64_t taken = claims[w].taken.load(std::memory_order_relaxed);
-      deferred.insert(deferred.end(),
-                      lists[w].begin() + static_cast<std::ptrdiff_t>(taken & 0xffffffffu),
-                      lists[w].end() - static_cast<std::ptrdiff_t>(taken >> 32));
-      b.own_claim_ = nullptr;
-      b.partner_claim_ = nullptr;
-      b.partner_list_ = nullptr;
-    }
+    // Points nobody claimed (the regions ran out).
+    const std::uint64_t taken = claims[w].taken.load(std::memory_order_relaxed);
+    deferred.insert(deferred.end(),
+                    lists[w].begin() + static_cast<std::ptrdiff_t>(taken & 0xffffffffu),
+                    lists[w].end() - static_cast<std::ptrdiff_t>(taken >> 32));
+    b.forget_claims();
     for (const auto& [p, cell] : b.deferred_) deferred.push_back(p);
     deferred_cells_.insert(deferred_cells_.end(), b.deferred_.begin(), b.deferred_.end());
     if (w == 0) continue;
@@ -628,34 +622,29 @@ void Builder::run_worker(const std::vector<VertexId>& list, std::size_t from, Ce
       attempt(retry_[retry_head++].second, false);
     }
   };
-  if (own_claim_ == nullptr) {
-    for (std::size_t i = from; i < list.size(); ++i) {
-      take(list[i], i + 1 < list.size() ? list[i + 1] : kInfiniteVertex);
-    }
-  } else {
-    // The own stretch from the front, a block at a time.
-    std::size_t end = from;
-    for (std::size_t i = from;; ++i) {
-      if (i >= end && (exhausted_ || !claim_more(*own_claim_, false, 0, end))) break;
-      // (The next point is nearly always this worker's too: the partner takes points from
-      // the far end only.)
-      take(list[i], i + 1 < list.size() ? list[i + 1] : kInfiniteVertex);
-    }
-    // Then the partner's from the back, towards the partner (the partner's walks come from
-    // the other side: the two meet only at the end).
-    // (A worker that found no start holds no cell to walk from: it takes nothing.)
-    if (partner_claim_ != nullptr && from < list.size()) {
-      const std::vector<VertexId>& other = *partner_list_;
-      std::size_t back = 0;
-      for (std::size_t j = 0;; ++j) {
-        if (j >= back &&
-            (exhausted_ || !claim_more(*partner_claim_, true, options_.parallel_steal_gap, back))) {
-          break;
-        }
-        const std::size_t at = other.size() - 1 - j;
-        take(other[at], at > 0 ? other[at - 1] : kInfiniteVertex);
-        ++stats_->taken_points;
+  // The own stretch from the front, a block at a time (a worker whose region runs out
+  // stops claiming: its partner, or the sequential pass, takes the rest).
+  std::size_t end = from;
+  for (std::size_t i = from;; ++i) {
+    if (i >= end && (exhausted_ || !claim_more(*own_claim_, false, 0, end))) break;
+    // (The next point is nearly always this worker's too: the partner takes points from
+    // the far end only.)
+    take(list[i], i + 1 < list.size() ? list[i + 1] : kInfiniteVertex);
+  }
+  // Then the partner's from the back, towards the partner (the partner's walks come from
+  // the other side: the two meet only at the end).
+  // (A worker that found no start holds no cell to walk from: it takes nothing.)
+  if (partner_claim_ != nullptr && from < list.size()) {
+    const std::vector<VertexId>& other = *partner_list_;
+    std::size_t back = 0;
+    for (std::size_t j = 0;; ++j) {
+      if (j >= back &&
+          (exhausted_ || !claim_more(*partner_claim_, true, options_.parallel_steal_gap, back))) {
+        break;
       }
+      const std::size_t at = other.size() - 1 - j;
+      take(other[at], at > 0 ? other[at - 1] : kInfiniteVertex);
+      ++stats_->taken_points;
     }
   }
   next_point_ = kInfiniteVertex;

@@ -58,8 +58,8 @@ class Builder {
   /// Renumbers the live cells in the canonical order (see TriangulationOptions) and drops
   /// the free ones; the hidden records' hint cells follow.
   void canonicalize_cells();
-  /// The worker's points list[from..] (with claims, those it claims; then, with a partner,
-  /// some of the partner's from the back), those it cannot insert appended to deferred_.
+  /// The worker's points list[from..] as it claims them, then (with a partner) some of the
+  /// partner's from the back; those it cannot insert are appended to deferred_.
   void run_worker(const std::vector<VertexId>& list, std::size_t from, CellId start);
   /// In a pass with locks the workers go in pairs (2s, 2s + 1), each inserting its own
   /// stretch from the front; one that is done inserts its partner's remaining points from
@@ -76,6 +76,12 @@ class Builder {
   /// point is claimed, or from the back, when at most `gap` are left
   /// (TriangulationOptions::parallel_steal_gap).
   static bool claim_more(Claim& claim, bool back, std::size_t gap, std::size_t& end);
+  /// Drops the pointers to a pass's claims (which live in parallel_pass).
+  void forget_claims() {
+    own_claim_ = nullptr;
+    partner_claim_ = nullptr;
+    partner_list_ = nullptr;
+  }
   /// Walk through owned cells only (see walk()); `blocked` when the next cell is not owned.
   CellId walk_owned(const Point3& q, CellId start, bool& blocked);
   /// With locks: keeps only the locks of cell c, which becomes the start of the next walk.
@@ -286,7 +292,7 @@ class Builder {
   CellId region_end_ = 0;
   bool exhausted_ = false;                 // the region ran out during this pass
   std::vector<std::pair<std::size_t, VertexId>> retry_;  // (attempt number, point) to retry
-  Claim* own_claim_ = nullptr;        // the worker's stretch's claims (null: all its own)
+  Claim* own_claim_ = nullptr;        // the claims on the worker's stretch (during a pass)
   Claim* partner_claim_ = nullptr;    // the partner's, if any
   const std::vector<VertexId>* partner_list_ = nullptr;
   bool parallel_futile_ = false;           // a pass deferred too much: sequential from now
