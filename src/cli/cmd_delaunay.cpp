@@ -108,6 +108,8 @@ class DelaunayCommand : public Command {
     data["parallel_points"] = t.stats().parallel_points;
     data["deferred_points"] = t.stats().deferred_points;
     data["taken_points"] = t.stats().taken_points;
+    data["border_passes"] = t.stats().border_passes;
+    data["lock_passes"] = t.stats().lock_passes;
     data["peak_memory_bytes"] = peak_memory_bytes();
     context.info(std::to_string(n) + " points: " + std::to_string(t.number_of_vertices()) +
                  " vertices, " + std::to_string(t.hidden_points().size()) + " hidden, " +

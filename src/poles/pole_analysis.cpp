@@ -107,6 +107,12 @@ void record(Report& report, const PoleAnalysis& analysis) {
   j["duplicate_samples"] = analysis.duplicate_samples;
   j["tetrahedra"] = analysis.tetrahedra;
   j["poles"] = analysis.poles.size();
+  const triangulation::TriangulationStats& d = analysis.delaunay;
+  j["delaunay_threads"] = d.threads;
+  j["delaunay_parallel_points"] = d.parallel_points;
+  j["delaunay_deferred_points"] = d.deferred_points;
+  j["delaunay_border_passes"] = d.border_passes;
+  j["delaunay_lock_passes"] = d.lock_passes;
   j["labelled"] = analysis.labelled;
   if (analysis.labelled) record_labels(report, analysis.labeling);
 }
@@ -146,8 +152,15 @@ PoleAnalysis analyse_poles(std::span<const Point3> samples, const PoleAnalysisOp
     triangulation::TriangulationOptions dt_options;
     dt_options.threads = options.threads;
     dt_options.insert_first = box.size();  // shared by the workers (see insert_first)
+    // Samples of a surface: the automatic scheme's first pass with fixed borders would
+    // defer about half of its round before turning to locks (see builder.cpp). Double
+    // torus (bench_seed, 5 pairs): 0.425 / 0.358 / 0.354 / 0.377 / 0.373 -> 0.324 /
+    // 0.319 / 0.324 / 0.360 / 0.355 s; that round alone (rstruct delaunay, 4 pairs)
+    // 0.091 / 0.059 / 0.064 / 0.063 -> 0.049 / 0.042 / 0.046 / 0.051 s.
+    dt_options.parallel_scheme = triangulation::TriangulationOptions::ParallelScheme::locks;
     triangulation::RegularTriangulation3 dt(std::move(sites), dt_options);
     analysis.duplicate_samples = dt.duplicate_points().size();
+    analysis.delaunay = dt.stats();
     sites.assign(dt.points().begin(), dt.points().end());
     soup = soup_of(dt, samples.size(), options.threads);
   }

@@ -398,6 +398,7 @@ void Builder::insert_deferred(const std::vector<VertexId>& deferred) {
 // the points deferred, in increasing rank.
 std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<VertexId>, 8>& lists,
                                              std::size_t inserted, bool locking) {
+  ++(locking ? t_.stats_.lock_passes : t_.stats_.border_passes);
   auto& cells = t_.cells_;
   const unsigned k = workers_;
   while (helpers_.size() + 1 < k) {
@@ -664,7 +665,16 @@ bool Builder::claim_more(Claim& claim, bool back, std::size_t gap, std::size_t& 
     // workers (test_parallel_workload, 3 runs of 3 triangulations each), deferred
     // 0.38-0.57 % when a worker takes points until the two meet; with a gap of 4,096
     // points the deferrals are those of workers that take nothing, within the noise (per
-    // triangulation 77-810 points against 80-943, 9 runs each on a loaded VM).
+    // triangulation 77-810 points against 80-943, 9 runs each on a loaded VM). But the
+    // partner inserts the gap alone: 4,096 points are 20-25 ms of one idle core on the
+    // double torus (85,237 points, last round about 2·21,000), a fifth of a stretch there.
+    // A gap of 256 points (bench_triangulation --case torus --threads 2, 3 runs each, same
+    // binary): 10^5 points with locks, insertion 0.453 / 0.475 / 0.415 s -> 0.442 / 0.412
+    // / 0.417 s, deferred 0.38 / 2.09 / 0.30 % -> 0.26 / 0.41 / 0.14 % (gap 0: 0.484 /
+    // 0.422 / 0.434 s, 1.50 / 0.60 / 0.60 %); the automatic scheme 0.606 / 0.609 / 0.513
+    // -> 0.607 / 0.564 / 0.505 s; 10^6 points 8.17 / 7.70 / 8.36 -> 7.89 / 7.88 / 8.39 s
+    // (the noise); the pole analysis of the double torus (bench_seed, 5 pairs) Delaunay
+    // 0.441 / 0.322 / 0.298 / 0.389 / 0.320 -> 0.315 / 0.298 / 0.293 / 0.316 / 0.301 s.
     if (mine + other + (back ? gap : 0) >= claim.size) return false;
     const std::uint64_t next = std::min(mine + kClaimBlock, claim.size - other);
     const std::uint64_t updated = back ? (taken & 0xffffffffu) | next << 32

@@ -328,5 +328,10 @@ TEST_CASE("the seed polytope does not depend on the threads of its triangulation
     options.threads = threads;
     const SeedPolytope many = rstruct::pipeline::compute_seed_polytope(samples, options);
     check_same_output(many, one);
+    // Balls on a surface: locks from the first parallel pass (as the pole analysis's).
+    CHECK(many.triangulation.threads == threads);
+    CHECK(many.triangulation.parallel_points > samples.size() / 2);
+    CHECK(many.triangulation.border_passes == 0);
+    CHECK(many.triangulation.lock_passes >= 1);
   }
 }

@@ -306,10 +306,17 @@ TEST_CASE("the pole analysis does not depend on the threads of its Delaunay tria
   one.threads = 1;
   const auto sequential = analyse_poles(samples, one);
   REQUIRE(sequential.poles.is_valid());
+  CHECK(sequential.delaunay.parallel_points == 0);
   for (const unsigned threads : {2u, 2u, 3u}) {
     PoleAnalysisOptions options;
     options.threads = threads;
     const auto parallel = analyse_poles(samples, options);
+    // Samples of a surface: locks from the first parallel pass, no pass with fixed borders
+    // (which would defer about half of its round).
+    CHECK(parallel.delaunay.threads == threads);
+    CHECK(parallel.delaunay.parallel_points > samples.size() / 2);
+    CHECK(parallel.delaunay.border_passes == 0);
+    CHECK(parallel.delaunay.lock_passes >= 1);
     CHECK(parallel.tetrahedra == sequential.tetrahedra);
     CHECK(parallel.poles.sites == sequential.poles.sites);
     CHECK(parallel.poles.centre == sequential.poles.centre);

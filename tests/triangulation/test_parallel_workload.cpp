@@ -36,29 +36,42 @@ TriangulationStats parallel_stats(const Input& in, unsigned threads, Scheme sche
 }
 
 /// Most points went to the passes, which inserted `share` of them themselves at least.
-void check_busy(const Input& in, unsigned threads, Scheme scheme, double share) {
+TriangulationStats check_busy(const Input& in, unsigned threads, Scheme scheme, double share) {
   const TriangulationStats s = parallel_stats(in, threads, scheme);
   CHECK(s.parallel_points > in.points.size() / 2);
   CHECK(static_cast<double>(s.deferred_points) <
         (1 - share) * static_cast<double>(s.parallel_points));
+  return s;
 }
 
 }  // namespace
 
 TEST_CASE("uniform points: fixed borders, two passes") {
-  // 40,000 points, three workers: 6 % deferred after both passes.
   const Input in{rstruct::test::uniform_points(40000, 11), {}};
-  check_busy(in, 2, Scheme::automatic, 2.0 / 3);
+  // Two workers: every pass with fixed borders (the second cuts across the first one's
+  // borders). Three: pass 1 of the 20,000-point round defers more than a quarter of it
+  // (its stretches are small, so a large share of their points lies near a border) and
+  // that round turns to locks; deterministic, since a pass with fixed borders does not
+  // depend on timing.
+  const TriangulationStats two = check_busy(in, 2, Scheme::automatic, 2.0 / 3);
+  CHECK(two.border_passes >= 2);
+  CHECK(two.lock_passes == 0);
   check_busy(in, 3, Scheme::automatic, 2.0 / 3);
 }
 
 TEST_CASE("points on a torus: locks after the first large pass") {
   const Input in{torus_points(30000, 5), {}};
-  check_busy(in, 2, Scheme::automatic, 2.0 / 3);
+  const TriangulationStats automatic = check_busy(in, 2, Scheme::automatic, 2.0 / 3);
+  // Fixed borders until a large round defers a quarter, then locks.
+  CHECK(automatic.border_passes >= 1);
+  CHECK(automatic.lock_passes >= 1);
   const std::size_t n = 30000;
   const Input weighted{torus_points(n, 12), rstruct::test::hiding_weights(n, 2e-3, 13)};
-  check_busy(weighted, 2, Scheme::locks, 2.0 / 3);
-  check_busy(weighted, 3, Scheme::locks, 2.0 / 3);
+  for (const unsigned threads : {2u, 3u}) {
+    const TriangulationStats s = check_busy(weighted, threads, Scheme::locks, 2.0 / 3);
+    CHECK(s.border_passes == 0);
+    CHECK(s.lock_passes >= 1);
+  }
 }
 
 TEST_CASE("points on a torus: a point kept out by the other worker's locks is tried again") {

@@ -79,6 +79,7 @@ struct SeedPolytope {
   std::vector<double> dhat;            ///< D̂ per sample
   std::vector<double> radius;          ///< surface-ball radius ρ·D̂ per sample
   std::size_t hidden_balls = 0;        ///< kept balls with empty power cells
+  triangulation::TriangulationStats triangulation;  ///< the kept balls' regular triangulation
   PruneResult prune;                   ///< cover size, certified bound and gap (if pruned)
   bool pruned = false;
 

@@ -24,6 +24,7 @@
 #include "rstruct/poles/pole_distance.hpp"
 #include "rstruct/poles/pole_labeling.hpp"
 #include "rstruct/poles/pole_set.hpp"
+#include "rstruct/triangulation/regular_triangulation_3.hpp"
 
 namespace rstruct::poles {
 
@@ -55,6 +56,7 @@ struct PoleAnalysis {
   std::size_t duplicate_samples = 0; ///< samples merged into an identical one
   std::size_t tetrahedra = 0;      ///< finite Delaunay tetrahedra (with box sites)
   double bbox_diagonal = 0;        ///< of the samples
+  triangulation::TriangulationStats delaunay;  ///< the Delaunay triangulation's counts
 };
 
 /// Runs steps 1–4 (without 3 when options.label is false). Stage seconds go to `report`

@@ -139,13 +139,18 @@ struct TriangulationOptions {
   std::size_t insert_first = 0;
   /// How the parallel passes share the work (with threads > 1): `automatic` starts with
   /// fixed borders and turns to locks after a pass that defers a quarter of a large round;
-  /// `borders` and `locks` keep to one (tests and benchmarks compare them).
+  /// `borders` and `locks` keep to one (tests and benchmarks compare them, and callers
+  /// whose points are known to lie on a surface, such as the pipeline's, skip the border
+  /// pass that `automatic` would find futile).
   enum class ParallelScheme : std::uint8_t { automatic, borders, locks };
   ParallelScheme parallel_scheme = ParallelScheme::automatic;
   /// With locks, the threads go in pairs: one that is done with its stretch inserts its
   /// partner's remaining points from the far end, and stops this many points before the
-  /// partner (two threads that near each other keep each other out). Tests set 0.
-  std::size_t parallel_steal_gap = 4096;
+  /// partner (two threads that near each other keep each other out; the partner inserts
+  /// the gap alone, one core idle meanwhile). Tests set 0. A number of points, not a
+  /// share: the gap's extent on a surface, in units of the point spacing, and so the
+  /// chance that the two threads' cavities meet, does not depend on the number of points.
+  std::size_t parallel_steal_gap = 256;
   /// Number the cells in the canonical order at the end: by their smallest vertex id, then
   /// by their other vertex ids (within a cell: the two smallest ids first, increasing, then
   /// the order that keeps the orientation). The cell array then depends only on the
@@ -173,6 +178,8 @@ struct TriangulationStats {
   std::uint64_t parallel_points = 0;     ///< points processed by the parallel passes
   std::uint64_t deferred_points = 0;     ///< points the parallel passes left to the sequential one
   std::uint64_t taken_points = 0;        ///< points a thread took from its partner's stretch
+  std::uint64_t border_passes = 0;       ///< parallel passes with fixed borders
+  std::uint64_t lock_passes = 0;         ///< parallel passes with vertex locks
 };
 
 /// The result of is_valid(): ok, or the first violated property in words.
