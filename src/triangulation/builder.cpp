@@ -668,13 +668,13 @@ bool Builder::claim_more(Claim& claim, bool back, std::size_t gap, std::size_t& 
     // triangulation 77-810 points against 80-943, 9 runs each on a loaded VM). But the
     // partner inserts the gap alone: 4,096 points are 20-25 ms of one idle core on the
     // double torus (85,237 points, last round about 2·21,000), a fifth of a stretch there.
-    // A gap of 256 points (bench_triangulation --case torus --threads 2, 3 runs each, same
-    // binary): 10^5 points with locks, insertion 0.453 / 0.475 / 0.415 s -> 0.442 / 0.412
-    // / 0.417 s, deferred 0.38 / 2.09 / 0.30 % -> 0.26 / 0.41 / 0.14 % (gap 0: 0.484 /
-    // 0.422 / 0.434 s, 1.50 / 0.60 / 0.60 %); the automatic scheme 0.606 / 0.609 / 0.513
-    // -> 0.607 / 0.564 / 0.505 s; 10^6 points 8.17 / 7.70 / 8.36 -> 7.89 / 7.88 / 8.39 s
-    // (the noise); the pole analysis of the double torus (bench_seed, 5 pairs) Delaunay
-    // 0.441 / 0.322 / 0.298 / 0.389 / 0.320 -> 0.315 / 0.298 / 0.293 / 0.316 / 0.301 s.
+    // Its pole analysis's Delaunay (bench_seed, 5 pairs, same binary) with a gap of 256:
+    // 0.441 / 0.322 / 0.298 / 0.389 / 0.320 -> 0.315 / 0.298 / 0.293 / 0.316 / 0.301 s;
+    // 10^6 torus points (bench_triangulation, 3 pairs) 8.17 / 7.70 / 8.36 -> 7.89 / 7.88 /
+    // 8.39 s, the noise. But test_parallel_workload's deferrals (sums over its 3
+    // triangulations, 10 runs each, debugoptimized) grow: gap 4,096 median 905 (533-2,582),
+    // 1,024 median 988 (711-1,735), 256 median 1,390 (998-1,901). So 1,024, against 256 on
+    // the double torus (6 pairs) Delaunay medians 0.356 -> 0.366 s, the noise.
     if (mine + other + (back ? gap : 0) >= claim.size) return false;
     const std::uint64_t next = std::min(mine + kClaimBlock, claim.size - other);
     const std::uint64_t updated = back ? (taken & 0xffffffffu) | next << 32

@@ -150,7 +150,7 @@ struct TriangulationOptions {
   /// the gap alone, one core idle meanwhile). Tests set 0. A number of points, not a
   /// share: the gap's extent on a surface, in units of the point spacing, and so the
   /// chance that the two threads' cavities meet, does not depend on the number of points.
-  std::size_t parallel_steal_gap = 256;
+  std::size_t parallel_steal_gap = 1024;
   /// Number the cells in the canonical order at the end: by their smallest vertex id, then
   /// by their other vertex ids (within a cell: the two smallest ids first, increasing, then
   /// the order that keeps the orientation). The cell array then depends only on the
