@@ -154,9 +154,9 @@ PoleAnalysis analyse_poles(std::span<const Point3> samples, const PoleAnalysisOp
     dt_options.insert_first = box.size();  // shared by the workers (see insert_first)
     // Samples of a surface: the automatic scheme's first pass with fixed borders would
     // defer about half of its round before turning to locks (see builder.cpp). Double
-    // torus (bench_seed, 5 pairs): 0.425 / 0.358 / 0.354 / 0.377 / 0.373 -> 0.324 /
-    // 0.319 / 0.324 / 0.360 / 0.355 s; that round alone (rstruct delaunay, 4 pairs)
-    // 0.091 / 0.059 / 0.064 / 0.063 -> 0.049 / 0.042 / 0.046 / 0.051 s.
+    // torus (bench_seed, 5 pairs, steal gap 256 in both): 0.425 / 0.358 / 0.354 / 0.377 /
+    // 0.373 -> 0.324 / 0.319 / 0.324 / 0.360 / 0.355 s; that round alone (rstruct
+    // delaunay, 4 pairs) 0.091 / 0.059 / 0.064 / 0.063 -> 0.049 / 0.042 / 0.046 / 0.051 s.
     dt_options.parallel_scheme = triangulation::TriangulationOptions::ParallelScheme::locks;
     triangulation::RegularTriangulation3 dt(std::move(sites), dt_options);
     analysis.duplicate_samples = dt.duplicate_points().size();
