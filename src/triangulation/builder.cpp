@@ -661,20 +661,20 @@ bool Builder::claim_more(Claim& claim, bool back, std::size_t gap, std::size_t& 
     const std::size_t mine = back ? back_count : front_count;
     const std::size_t other = back ? front_count : back_count;
     RSTRUCT_DEBUG_ASSERT(mine == end);
-    // Two workers that near each other keep each other out: 1.2·10^5 torus points, two
-    // workers (test_parallel_workload, 3 runs of 3 triangulations each), deferred
-    // 0.38-0.57 % when a worker takes points until the two meet; with a gap of 4,096
-    // points the deferrals are those of workers that take nothing, within the noise (per
-    // triangulation 77-810 points against 80-943, 9 runs each on a loaded VM). But the
-    // partner inserts the gap alone: 4,096 points are 20-25 ms of one idle core on the
-    // double torus (85,237 points, last round about 2·21,000), a fifth of a stretch there.
-    // Its pole analysis's Delaunay (bench_seed, 5 pairs, same binary) with a gap of 256:
-    // 0.441 / 0.322 / 0.298 / 0.389 / 0.320 -> 0.315 / 0.298 / 0.293 / 0.316 / 0.301 s;
-    // 10^6 torus points (bench_triangulation, 3 pairs) 8.17 / 7.70 / 8.36 -> 7.89 / 7.88 /
-    // 8.39 s, the noise. But test_parallel_workload's deferrals (sums over its 3
-    // triangulations, 10 runs each, debugoptimized) grow: gap 4,096 median 905 (533-2,582),
-    // 1,024 median 988 (711-1,735), 256 median 1,390 (998-1,901). So 1,024, against 256 on
-    // the double torus (6 pairs) Delaunay medians 0.356 -> 0.366 s, the noise.
+    // The gap (TriangulationOptions::parallel_steal_gap) trades two costs. Two workers
+    // that near each other keep each other out: 1.2·10^5 torus points, two workers
+    // (test_parallel_workload, 3 runs of 3 triangulations each), deferred 0.38-0.57 % when
+    // a worker takes points until the two meet. And the partner inserts the gap alone:
+    // 4,096 points are 20-25 ms of one idle core on the double torus (85,237 points, last
+    // round about 2·21,000), a fifth of a stretch there. Measured, same binary:
+    // - deferrals in test_parallel_workload (sums over its 3 triangulations, 10 runs each,
+    //   debugoptimized): gap 4,096 median 905 (533-2,582), 1,024 median 988 (711-1,735),
+    //   256 median 1,390 (998-1,901);
+    // - the double torus's pole analysis Delaunay (bench_seed): 4,096 -> 256, 5 pairs,
+    //   0.441 / 0.322 / 0.298 / 0.389 / 0.320 -> 0.315 / 0.298 / 0.293 / 0.316 / 0.301 s;
+    //   256 -> 1,024, 6 pairs, medians 0.356 -> 0.366 s (the noise);
+    // - 10^6 torus points (bench_triangulation, 4,096 -> 256, 3 pairs): 8.17 / 7.70 / 8.36
+    //   -> 7.89 / 7.88 / 8.39 s (the noise).
     if (mine + other + (back ? gap : 0) >= claim.size) return false;
     const std::uint64_t next = std::min(mine + kClaimBlock, claim.size - other);
     const std::uint64_t updated = back ? (taken & 0xffffffffu) | next << 32
