@@ -9,17 +9,30 @@ namespace rstruct::setcover::detail {
 
 // Lazy greedy: a popped column is rescored, and taken if it is still first. Scores only
 // grow as rows get covered, so this takes the first column in (score, index) order at every
-// step. The uncovered-row count μ of every column is kept up to date as rows get covered
-// (each row once: one pass over the matrix in all), so a column whose μ has not changed
-// since it was scored is taken without rescoring, and without multipliers a rescore is one
-// division. With multipliers γ is summed over the column as before, in the same order.
-// 10^6 torus samples (2.5·10^7 entries, no multipliers, medians of interleaved runs):
-// 0.97 -> 0.75 s, the same cover. A stale column re-queued replaces the top of the queue
-// (CandidateHeap) instead of a pop and a push: the geometric instance of 10^6 torus samples
-// (bench_setcover --geometric --samples 1000000 --rho 0.03 --shape 0, written and read
-// back), 4 interleaved runs, std::priority_queue 1.19-1.37 s, binary heap with replacement
-// 1.10-1.12 s, 4-ary 1.01-1.08 s, the same cover; with multipliers no change (2.07-2.31 s:
-// there the sums of rescoring take the time).
+// step.
+//
+// The uncovered-row count μ of every column is kept up to date as rows get covered (each
+// row once: one pass over the matrix in all), so a column whose μ has not changed since it
+// was scored is taken without rescoring. 10^6 torus samples (2.5·10^7 entries, no
+// multipliers, medians of interleaved runs): 0.97 -> 0.75 s, the same cover.
+//
+// A stale column re-queued replaces the top of the queue (CandidateHeap) instead of a pop
+// and a push: the geometric instance of 10^6 torus samples (bench_setcover --geometric
+// --samples 1000000 --rho 0.03 --shape 0, written and read back), 4 interleaved runs,
+// std::priority_queue 1.19-1.37 s, binary heap with replacement 1.10-1.12 s, 4-ary
+// 1.01-1.08 s, the same cover; with multipliers no change (2.07-2.31 s: there the sums of
+// rescoring took the time).
+//
+// So with multipliers γ_j is kept up to date too: it starts at c_j minus the multipliers of
+// all of j's rows, and covering row i adds u_i to the γ of every column through it; a
+// rescore is then one division or product. Its rounding differs from a fresh sum over the
+// uncovered rows, so a near tie may go the other way, but γ only grows (u ≥ 0), so the
+// scores still only grow and lazy evaluation stays exact. The Lagrangian greedy of the
+// 10^6-sample torus level (bench_seed --torus 1000000 --levels 0.5:0.03) runs on a thread of
+// its own after the last subgradient iteration, and the set cover waited 0.6 s for it: 6
+// interleaved pairs, subgradient stage 1.25-1.49 s (median 1.34) -> 0.99-1.32 s (median
+// 1.07), the same cover (58,150) and output. On the double torus, level 2 went from 4,600
+// to 4,574 balls (a near tie going the other way).
 std::vector<std::int32_t> greedy_cover(const Instance& inst, std::span<const double> u,
                                        std::span<const char> allowed,
                                        std::span<const std::int32_t> start) {
@@ -30,25 +43,42 @@ std::vector<std::int32_t> greedy_cover(const Instance& inst, std::span<const dou
   }
   std::int32_t uncovered = inst.num_rows();
   std::vector<std::int32_t> chosen;
+  // With multipliers, γ_j of every column is kept up to date like μ_j: covering row i adds
+  // u_i to the γ of the columns through it.
+  const bool weighted = !u.empty();
+  std::vector<double> gamma;
+  if (weighted) {
+    gamma.resize(static_cast<std::size_t>(inst.num_cols()));
+    for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
+      double g = inst.cost(j);
+      for (std::int32_t i : inst.column(j)) g -= u[i];
+      gamma[j] = g;
+    }
+  }
   auto take = [&](std::int32_t j) {
     chosen.push_back(j);
     for (std::int32_t i : inst.column(j)) {
       if (!covered[i]) {
         covered[i] = 1;
         --uncovered;
-        for (std::int32_t k : inst.row(i)) --mu[k];
+        if (weighted) {
+          const double ui = u[i];
+          for (std::int32_t k : inst.row(i)) {
+            --mu[k];
+            gamma[k] += ui;
+          }
+        } else {
+          for (std::int32_t k : inst.row(i)) --mu[k];
+        }
       }
     }
   };
   for (std::int32_t j : start) take(j);
   auto score = [&](std::int32_t j) {
     if (mu[j] == 0) return Candidate{0.0, -1, 0};
-    if (u.empty()) return Candidate{inst.cost(j) / mu[j], j, mu[j]};
-    double gamma = inst.cost(j);
-    for (std::int32_t i : inst.column(j)) {
-      if (!covered[i]) gamma -= u[i];
-    }
-    return Candidate{gamma > 0 ? gamma / mu[j] : gamma * mu[j], j, mu[j]};
+    if (!weighted) return Candidate{inst.cost(j) / mu[j], j, mu[j]};
+    const double g = gamma[j];
+    return Candidate{g > 0 ? g / mu[j] : g * mu[j], j, mu[j]};
   };
   CandidateHeap heap;
   heap.reserve(static_cast<std::size_t>(inst.num_cols()));

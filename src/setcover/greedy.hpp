@@ -13,7 +13,9 @@ namespace rstruct::setcover::detail {
 /// Greedy cover. Without multipliers the score of column j is c_j / μ_j (μ_j = rows of j
 /// still uncovered). With multipliers u it is CFT's score on γ_j = c_j − Σ_{uncovered i ∈ j} u_i:
 /// γ_j / μ_j if γ_j > 0, else γ_j · μ_j. Only columns with allowed[j] != 0 are used (all when
-/// `allowed` is empty); the columns in `start` are taken first. Both scores only grow as
+/// `allowed` is empty); the columns in `start` are taken first. γ_j is kept up to date as
+/// rows get covered (c_j minus all of j's multipliers, then u_i added back when row i is
+/// covered), so it may differ from a fresh sum in the last bits. Both scores only grow as
 /// rows get covered, which makes lazy evaluation exact. Result has redundant columns removed.
 /// \pre the allowed columns cover every row.
 std::vector<std::int32_t> greedy_cover(const Instance& inst, std::span<const double> u = {},

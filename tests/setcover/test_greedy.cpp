@@ -1,6 +1,9 @@
 // The lazy greedy (src/setcover/greedy.cpp: heap, incremental uncovered counts, rescoring
 // only when a column lost rows) against the plain definition: at every step score every
-// allowed column from scratch and take the first in (score, index) order.
+// allowed column and take the first in (score, index) order. γ_j is defined as the greedy
+// computes it: c_j minus the multipliers of all its rows, then u_i added back as row i gets
+// covered (in the order the rows are covered, over the instance's row lists), so the two
+// agree to the last bit; the counts μ_j are recounted from scratch here.
 #include "setcover/greedy.hpp"
 
 #include <catch2/catch.hpp>
@@ -21,10 +24,22 @@ std::vector<std::int32_t> naive_greedy(const Instance& inst, const std::vector<d
                                        const std::vector<char>& allowed,
                                        const std::vector<std::int32_t>& start) {
   std::vector<char> covered(static_cast<std::size_t>(inst.num_rows()), 0);
+  std::vector<double> gamma(static_cast<std::size_t>(inst.num_cols()));
+  for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
+    gamma[j] = inst.cost(j);
+    if (!u.empty()) {
+      for (const std::int32_t i : inst.column(j)) gamma[j] -= u[i];
+    }
+  }
   std::vector<std::int32_t> chosen;
   const auto take = [&](std::int32_t j) {
     chosen.push_back(j);
-    for (const std::int32_t i : inst.column(j)) covered[i] = 1;
+    for (const std::int32_t i : inst.column(j)) {
+      if (covered[i]) continue;
+      covered[i] = 1;
+      if (u.empty()) continue;
+      for (const std::int32_t k : inst.row(i)) gamma[k] += u[i];
+    }
   };
   for (const std::int32_t j : start) take(j);
   for (;;) {
@@ -34,14 +49,10 @@ std::vector<std::int32_t> naive_greedy(const Instance& inst, const std::vector<d
     for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
       if (!allowed.empty() && !allowed[j]) continue;
       std::int32_t mu = 0;
-      double gamma = inst.cost(j);
-      for (const std::int32_t i : inst.column(j)) {
-        if (covered[i]) continue;
-        ++mu;
-        if (!u.empty()) gamma -= u[i];
-      }
+      for (const std::int32_t i : inst.column(j)) mu += covered[i] ? 0 : 1;
       if (mu == 0) continue;
-      const double score = u.empty() ? gamma / mu : (gamma > 0 ? gamma / mu : gamma * mu);
+      const double g = gamma[j];
+      const double score = u.empty() ? g / mu : (g > 0 ? g / mu : g * mu);
       if (score < best) {  // ties: the smaller index, met first
         best = score;
         best_col = j;
