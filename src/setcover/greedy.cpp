@@ -48,6 +48,9 @@ std::vector<std::int32_t> greedy_cover(const Instance& inst, std::span<const dou
   const bool weighted = !u.empty();
   std::vector<double> gamma;
   if (weighted) {
+    // γ only grows, and the scores with it, if no multiplier is negative.
+    RSTRUCT_ASSERT_MSG(std::all_of(u.begin(), u.end(), [](double x) { return x >= 0.0; }),
+                       "greedy: negative multiplier");
     gamma.resize(static_cast<std::size_t>(inst.num_cols()));
     for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
       double g = inst.cost(j);

@@ -17,7 +17,7 @@ namespace rstruct::setcover::detail {
 /// rows get covered (c_j minus all of j's multipliers, then u_i added back when row i is
 /// covered), so it may differ from a fresh sum in the last bits. Both scores only grow as
 /// rows get covered, which makes lazy evaluation exact. Result has redundant columns removed.
-/// \pre the allowed columns cover every row.
+/// \pre the allowed columns cover every row; no multiplier is negative.
 std::vector<std::int32_t> greedy_cover(const Instance& inst, std::span<const double> u = {},
                                        std::span<const char> allowed = {},
                                        std::span<const std::int32_t> start = {});

@@ -13,6 +13,7 @@
 #include <limits>
 #include <random>
 
+#include "rstruct/core/error.hpp"
 #include "small_instances.hpp"
 
 using rstruct::setcover::Instance;
@@ -127,4 +128,14 @@ TEST_CASE("lazy greedy takes the columns the plain greedy takes, on instances of
     const auto lazy = rstruct::setcover::detail::greedy_cover(inst, u, {}, {});
     CHECK(lazy == naive_greedy(inst, u, {}, {}));
   }
+}
+
+TEST_CASE("greedy refuses a negative multiplier") {
+  // γ would then fall as rows get covered, and the lazy queue could take a column that is
+  // no longer first.
+  const Instance inst = Instance::from_columns(2, {{0}, {1}, {0, 1}}, {1.0, 1.0, 1.5});
+  const std::vector<double> negative{0.5, -0.25};
+  const std::vector<double> positive{0.5, 0.25};
+  CHECK_THROWS_AS(rstruct::setcover::detail::greedy_cover(inst, negative), rstruct::InternalError);
+  CHECK(rstruct::setcover::detail::greedy_cover(inst, positive) == std::vector<std::int32_t>{2});
 }
