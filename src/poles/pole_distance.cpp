@@ -5,7 +5,7 @@
 #include <functional>
 #include <mutex>
 
-#include "nearest_point_tree.hpp"
+#include "point_tree.hpp"
 #include "spatial_order.hpp"
 #include "rstruct/core/error.hpp"
 #include "rstruct/core/parallel.hpp"
@@ -73,9 +73,9 @@ PoleDistance sample_pole_distance(std::span<const Point3> samples, const PoleSet
     return {};
   }
   // The nearest pole lies on the far side of a large empty ball, whose boundary crosses
-  // many leaves: see nearest_point_tree.hpp for the tree, its .cpp for the figures.
-  const detail::NearestPointTree tree(poles.centre, detail::NearestPointTree::kDefaultLeafSize,
-                                      detail::NearestPointTree::Scan::best, threads);
+  // many leaves: see point_tree.hpp for the tree, its .cpp for the figures.
+  const detail::PointTree tree(poles.centre, detail::PointTree::kDefaultLeafSize,
+                                      detail::PointTree::Scan::best, threads);
   const auto from_own_poles = [&](std::size_t i) {
     std::uint32_t best = kNoPole;
     double best_d2 = HUGE_VAL;
@@ -98,8 +98,8 @@ PoleDistance pole_distance(std::span<const Point3> points, std::span<const Point
                            unsigned threads) {
   check_inputs(points, pole_centres);
   if (points.empty()) return {};
-  const detail::NearestPointTree tree(pole_centres, detail::NearestPointTree::kDefaultLeafSize,
-                                      detail::NearestPointTree::Scan::best, threads);
+  const detail::PointTree tree(pole_centres, detail::PointTree::kDefaultLeafSize,
+                                      detail::PointTree::Scan::best, threads);
   return run_queries(points, pole_centres, threads,
                      [&](std::size_t i) { return tree.nearest(points[i]); });
 }

@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "poles/point_kd_tree.hpp"
+#include "poles/point_tree.hpp"
 #include "rstruct/geometry/vec3.hpp"
 
 namespace rstruct::lemmas {
@@ -151,7 +151,7 @@ class SimplexIndex {
         group->centres.push_back(centre[i]);
         group->max_radius = std::max(group->max_radius, radius[i]);
       }
-      group->tree = std::make_unique<poles::detail::PointKdTree>(group->centres);
+      group->tree = std::make_unique<poles::detail::PointTree>(group->centres);
       groups_.push_back(std::move(group));
     }
   }
@@ -192,7 +192,7 @@ class SimplexIndex {
     std::vector<std::uint32_t> ids;
     std::vector<Point3> centres;
     double max_radius = 0;
-    std::unique_ptr<poles::detail::PointKdTree> tree;
+    std::unique_ptr<poles::detail::PointTree> tree;
   };
   std::vector<EmbeddedSimplex> simplices_;
   std::vector<Point3> position_;

@@ -314,7 +314,7 @@ void check_alpha_shapes(const Instance& in, Table& t, UpperBoundFailures& upper)
       vertex_positions.push_back(poles.centre[p]);
     }
   }
-  const auto vertex_tree = std::make_unique<rstruct::poles::detail::PointKdTree>(vertex_positions);
+  const auto vertex_tree = std::make_unique<rstruct::poles::detail::PointTree>(vertex_positions);
   double smallest_ratio = 1.0;
   const std::size_t n = in.samples.size();
   const std::size_t step = (n + kCorollary55Samples - 1) / kCorollary55Samples;
@@ -404,7 +404,7 @@ namespace {
 /// starts in U(B_F) and crosses ∂U(B_F) exactly once: the parameters t ∈ [0, 1] inside
 /// the union of surface balls form one interval [0, t*] with t* < 1.
 bool fibre_crosses_once(const Point3& a, const Point3& b, std::span<const rstruct::Ball> balls,
-                        const rstruct::poles::detail::PointKdTree& centres, double max_radius,
+                        const rstruct::poles::detail::PointTree& centres, double max_radius,
                         std::vector<std::uint32_t>& scratch) {
   scratch.clear();
   centres.candidates_within((a + b) * 0.5, rstruct::distance(a, b) * 0.5 + max_radius, scratch);
@@ -456,8 +456,8 @@ void check_surface_balls(const Instance& in, Table& t, int fibres_per_instance) 
     max_inner = std::max(max_inner, poles.radius[p]);
   }
   if (inner.empty()) return;
-  const rstruct::poles::detail::PointKdTree inner_tree(inner_centres);
-  const rstruct::poles::detail::PointKdTree sample_tree(centres);
+  const rstruct::poles::detail::PointTree inner_tree(inner_centres);
+  const rstruct::poles::detail::PointTree sample_tree(centres);
   rstruct::sampling::Random random(rstruct::sampling::derive_seed(in.samples.size(), 56));
   std::vector<std::uint32_t> scratch;
   int fibres = 0;

@@ -1,21 +1,26 @@
 #pragma once
-// A kd-tree for nearest-point queries (the pole distance D̂): each query returns the point
-// that minimises (squared distance, index), the same point as a scan of all points in
-// index order with a strict comparison (pole_distance_brute_force), whatever the tree.
+// A kd-tree over points, for two queries:
+//  - nearest point (the pole distance D̂): the point that minimises (squared distance,
+//    index), the same point as a scan of all points in index order with a strict
+//    comparison (pole_distance_brute_force), whatever the tree;
+//  - candidates within a radius (the covering sets, the lemma tests): a superset of the
+//    points at distance at most r, which the caller decides exactly
+//    (predicates::side_of_ball).
 //
 // The squared distance of a point is computed as rstruct::squared_distance computes it,
 // ((dx·dx + dy·dy) + dz·dz) with the differences rounded once (the project compiles with
 // -ffp-contract=off; the vector path below uses no fused multiply-add), so the minimum is
 // that of the values a scan computes, bit for bit. A subtree is skipped only when the lower
-// bound on its points' squared distances exceeds the current minimum by more than the
-// rounding of either side could explain (see skippable()), so no point that could win, or
-// tie and win on index, is ever skipped.
+// bound on its points' squared distances exceeds the current minimum (or r²) by more than
+// the rounding of either side could explain (see skippable()), so no point that could win,
+// or tie and win on index, or lie within r, is ever skipped.
 //
-// Why not nanoflann (which the covering sets' PointKdTree uses): the inner poles of a
+// Why not nanoflann (which the sampling's point index uses): the inner poles of a
 // surface crowd its medial axis, and on a 10^6-sample torus about 3,000 poles lie within
 // 0.1 % of each sample's nearest one, so a query spends its time scanning leaves. Here the
 // leaves are stored as coordinate arrays and scanned four points at a time with AVX2 where
 // the processor has it (chosen at run time), in larger leaves (see the .cpp for figures).
+// The same layout serves the radius queries (see covering_sets.cpp for figures).
 
 #include <array>
 #include <cstdint>
@@ -27,9 +32,9 @@
 
 namespace rstruct::poles::detail {
 
-class NearestPointTree {
+class PointTree {
  public:
-  /// The default leaf size, in points (see nearest_point_tree.cpp for the measurements).
+  /// The default leaf size, in points (see point_tree.cpp for the measurements).
   static constexpr std::uint32_t kDefaultLeafSize = 64;
   /// How leaves are scanned: the best the processor supports, or plain C++.
   enum class Scan { best, portable };
@@ -38,7 +43,7 @@ class NearestPointTree {
   /// up to `threads` threads (0: hardware concurrency): subtrees below the first splits are
   /// built side by side. The tree does not depend on the thread count.
   /// \pre points.size() < 2^32 − 1.
-  explicit NearestPointTree(std::span<const Point3> points,
+  explicit PointTree(std::span<const Point3> points,
                             std::uint32_t leaf_size = kDefaultLeafSize, Scan scan = Scan::best,
                             unsigned threads = 1);
 
@@ -53,6 +58,17 @@ class NearestPointTree {
   /// rstruct::squared_distance(q, p_index) (any other value only costs time if it is too
   /// large; it must not be smaller). Subtrees that cannot beat it are not visited.
   std::uint32_t nearest_from(const Point3& q, std::uint32_t index, double squared_distance) const;
+
+  /// Appends to `out`, in no particular order, the index of every point p with |p − q| ≤ r
+  /// and possibly of a few more: those whose computed squared distance is at most
+  /// inflated_squared_radius(r). The caller decides membership with an exact predicate.
+  /// \pre r ≥ 0 and finite, q finite.
+  void candidates_within(const Point3& q, double r, std::vector<std::uint32_t>& out) const;
+
+  /// r² enlarged by a relative 2⁻²⁰ plus the smallest normal double: far above the
+  /// few-ulp rounding of the computed squared distances (and of r·r), far below any
+  /// geometric scale.
+  static double inflated_squared_radius(double r) { return r * r * (1.0 + 0x1p-20) + 0x1p-1022; }
 
  private:
   struct Node {
@@ -74,6 +90,12 @@ class NearestPointTree {
                       const Box3& region, const Box3& tight, std::span<const Point3> points,
                       unsigned depth, unsigned threads) const;
   void search(std::uint32_t node, const double* q, double* cut, Best& best) const;
+  void collect(std::uint32_t node, const double* q, double* cut, double r2, double limit,
+               std::vector<std::uint32_t>& out) const;
+  void collect_leaf(const Node& node, const double* q, double limit,
+                    std::vector<std::uint32_t>& out) const;
+  void collect_leaf_avx2(const Node& node, const double* q, double limit,
+                         std::vector<std::uint32_t>& out) const;
   void scan_leaf(const Node& node, const double* q, Best& best) const;
   void scan_leaf_avx2(const Node& node, const double* q, Best& best) const;
 

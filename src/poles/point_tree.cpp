@@ -1,4 +1,4 @@
-#include "nearest_point_tree.hpp"
+#include "point_tree.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -79,13 +79,13 @@ bool avx2_available() {
 
 }  // namespace
 
-NearestPointTree::NearestPointTree(std::span<const Point3> points, std::uint32_t leaf_size,
-                                   Scan scan, unsigned threads)
+PointTree::PointTree(std::span<const Point3> points, std::uint32_t leaf_size, Scan scan,
+                     unsigned threads)
     : size_(points.size()),
       leaf_size_(std::max<std::uint32_t>(1, leaf_size)),
       vectorized_(scan == Scan::best && avx2_available()) {
   if (points.size() >= kNoIndex) {
-    throw InvalidInput("nearest-point tree: " + std::to_string(points.size()) +
+    throw InvalidInput("point tree: " + std::to_string(points.size()) +
                        " points exceed the supported maximum");
   }
   if (points.empty()) return;
@@ -108,7 +108,7 @@ NearestPointTree::NearestPointTree(std::span<const Point3> points, std::uint32_t
     slots += (nodes_[k].last - nodes_[k].first + 3) / 4 * 4;
   }
   if (slots >= kNoIndex) {
-    throw InvalidInput("nearest-point tree: " + std::to_string(points.size()) +
+    throw InvalidInput("point tree: " + std::to_string(points.size()) +
                        " points exceed the supported maximum");
   }
   x_.reset(new double[slots]);
@@ -140,10 +140,10 @@ NearestPointTree::NearestPointTree(std::span<const Point3> points, std::uint32_t
 
 /// Builds the subtree of the ids [first, last), whose points lie in `region` (the cell the
 /// splits above cut out) and span `tight`; returns its node.
-std::uint32_t NearestPointTree::build(std::vector<Node>& nodes, std::uint32_t* first,
-                                      std::uint32_t* last, const Box3& region, const Box3& tight,
-                                      std::span<const Point3> points, unsigned depth,
-                                      unsigned threads) const {
+std::uint32_t PointTree::build(std::vector<Node>& nodes, std::uint32_t* first,
+                               std::uint32_t* last, const Box3& region, const Box3& tight,
+                               std::span<const Point3> points, unsigned depth,
+                               unsigned threads) const {
   const auto id = static_cast<std::uint32_t>(nodes.size());
   nodes.emplace_back();
   const auto n = static_cast<std::size_t>(last - first);
@@ -229,12 +229,12 @@ std::uint32_t NearestPointTree::build(std::vector<Node>& nodes, std::uint32_t* f
   return id;
 }
 
-std::uint32_t NearestPointTree::nearest(const Point3& q) const {
+std::uint32_t PointTree::nearest(const Point3& q) const {
   return nearest_from(q, kNoIndex, HUGE_VAL);
 }
 
-std::uint32_t NearestPointTree::nearest_from(const Point3& q, std::uint32_t index,
-                                             double squared_distance) const {
+std::uint32_t PointTree::nearest_from(const Point3& q, std::uint32_t index,
+                                      double squared_distance) const {
   Best best{squared_distance, index};
   if (nodes_.empty()) return index;
   const double query[3] = {q.x, q.y, q.z};
@@ -253,7 +253,7 @@ std::uint32_t NearestPointTree::nearest_from(const Point3& q, std::uint32_t inde
 /// Visits the nearer child first; the farther one only if the bound through its side of
 /// the split can still beat the best (cut[] holds the squared gaps per axis that bound the
 /// current subtree).
-void NearestPointTree::search(std::uint32_t id, const double* q, double* cut, Best& best) const {
+void PointTree::search(std::uint32_t id, const double* q, double* cut, Best& best) const {
   const Node& node = nodes_[id];
   if (node.leaf) {
     if (vectorized_) {
@@ -277,7 +277,7 @@ void NearestPointTree::search(std::uint32_t id, const double* q, double* cut, Be
   cut[axis] = saved;
 }
 
-void NearestPointTree::scan_leaf(const Node& node, const double* q, Best& best) const {
+void PointTree::scan_leaf(const Node& node, const double* q, Best& best) const {
   for (std::uint32_t k = node.first; k < node.last; ++k) {
     const double dx = x_[k] - q[0];
     const double dy = y_[k] - q[1];
@@ -287,10 +287,91 @@ void NearestPointTree::scan_leaf(const Node& node, const double* q, Best& best) 
   }
 }
 
+void PointTree::candidates_within(const Point3& q, double r,
+                                  std::vector<std::uint32_t>& out) const {
+  if (nodes_.empty()) return;
+  const double query[3] = {q.x, q.y, q.z};
+  double cut[3];
+  for (std::size_t d = 0; d < 3; ++d) {
+    const double gap = query[d] < root_box_.lo[d]   ? root_box_.lo[d] - query[d]
+                       : query[d] > root_box_.hi[d] ? query[d] - root_box_.hi[d]
+                                                    : 0.0;
+    cut[d] = gap * gap;
+  }
+  // A subtree is skipped when skippable() puts all its points' squared distances above
+  // the rounded r·r (the argument of skippable() holds with r·r for the minimum: a
+  // relative error of 2⁻⁵³ more); a point is a candidate when its computed squared
+  // distance is at most the inflated radius, which no rounding can push a point at
+  // distance ≤ r past.
+  const double r2 = r * r;
+  if (!skippable(lower_bound(cut), r2)) collect(0, query, cut, r2, inflated_squared_radius(r), out);
+}
+
+/// Both children whose bound through their side of the split can be within r (cut[] as
+/// in search()).
+void PointTree::collect(std::uint32_t id, const double* q, double* cut, double r2, double limit,
+                        std::vector<std::uint32_t>& out) const {
+  const Node& node = nodes_[id];
+  if (node.leaf) {
+    if (vectorized_) {
+      collect_leaf_avx2(node, q, limit, out);
+    } else {
+      collect_leaf(node, q, limit, out);
+    }
+    return;
+  }
+  const std::size_t axis = node.axis;
+  const double below = q[axis] - node.low;   // > 0: q is past the lower child
+  const double above = q[axis] - node.high;  // < 0: q is before the upper child
+  const double saved = cut[axis];
+  cut[axis] = below > 0 ? below * below : saved;
+  if (!skippable(lower_bound(cut), r2)) collect(node.first, q, cut, r2, limit, out);
+  cut[axis] = above < 0 ? above * above : saved;
+  if (!skippable(lower_bound(cut), r2)) collect(node.last, q, cut, r2, limit, out);
+  cut[axis] = saved;
+}
+
+void PointTree::collect_leaf(const Node& node, const double* q, double limit,
+                             std::vector<std::uint32_t>& out) const {
+  for (std::uint32_t k = node.first; k < node.last; ++k) {
+    const double dx = x_[k] - q[0];
+    const double dy = y_[k] - q[1];
+    const double dz = z_[k] - q[2];
+    if ((dx * dx + dy * dy) + dz * dz <= limit) out.push_back(index_[k]);  // NaN padding: false
+  }
+}
+
 #if defined(RSTRUCT_NEAREST_AVX2)
-__attribute__((target("avx2"))) void NearestPointTree::scan_leaf_avx2(const Node& node,
-                                                                      const double* q,
-                                                                      Best& best) const {
+__attribute__((target("avx2"))) void PointTree::collect_leaf_avx2(
+    const Node& node, const double* q, double limit, std::vector<std::uint32_t>& out) const {
+  // The same operations as collect_leaf, four points at a time.
+  const __m256d qx = _mm256_set1_pd(q[0]);
+  const __m256d qy = _mm256_set1_pd(q[1]);
+  const __m256d qz = _mm256_set1_pd(q[2]);
+  const __m256d bound = _mm256_set1_pd(limit);
+  for (std::uint32_t k = node.first; k < node.last; k += 4) {
+    const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(x_.get() + k), qx);
+    const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(y_.get() + k), qy);
+    const __m256d dz = _mm256_sub_pd(_mm256_loadu_pd(z_.get() + k), qz);
+    const __m256d d2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+                                     _mm256_mul_pd(dz, dz));
+    auto inside = static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(d2, bound, _CMP_LE_OQ)));
+    for (; inside != 0; inside &= inside - 1) {
+      out.push_back(index_[k + static_cast<std::uint32_t>(__builtin_ctz(inside))]);
+    }
+  }
+}
+#else
+void PointTree::collect_leaf_avx2(const Node& node, const double* q, double limit,
+                                  std::vector<std::uint32_t>& out) const {
+  collect_leaf(node, q, limit, out);
+}
+#endif
+
+#if defined(RSTRUCT_NEAREST_AVX2)
+__attribute__((target("avx2"))) void PointTree::scan_leaf_avx2(const Node& node,
+                                                               const double* q,
+                                                               Best& best) const {
   // The same operations as scan_leaf, four points at a time (no fused multiply-add: the
   // target enables AVX2 only), so the same values.
   const __m256d qx = _mm256_set1_pd(q[0]);
@@ -314,7 +395,7 @@ __attribute__((target("avx2"))) void NearestPointTree::scan_leaf_avx2(const Node
   }
 }
 #else
-void NearestPointTree::scan_leaf_avx2(const Node& node, const double* q, Best& best) const {
+void PointTree::scan_leaf_avx2(const Node& node, const double* q, Best& best) const {
   scan_leaf(node, q, best);
 }
 #endif

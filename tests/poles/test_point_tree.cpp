@@ -1,21 +1,25 @@
-// The pole distance's kd-tree (src/poles/nearest_point_tree.hpp) returns exactly the point
-// a linear scan in index order returns: the smallest squared distance as
-// rstruct::squared_distance computes it, the smallest index among equal ones. Checked on
-// random, clustered, duplicate-heavy and tie-heavy sets, at extreme scales, with every leaf
-// size and both leaf scans, from no start and from a given one; trees built on one thread
-// and on several.
+// The kd-tree of the pole distance and the covering sets (src/poles/point_tree.hpp).
+// Nearest point: exactly the point a linear scan in index order returns, the smallest
+// squared distance as rstruct::squared_distance computes it, the smallest index among equal
+// ones. Candidates within r: every point the exact predicate puts in the closed ball, each
+// once, and no point whose computed squared distance exceeds the inflated radius. Checked
+// on random, clustered, duplicate-heavy and tie-heavy sets, at extreme scales, with every
+// leaf size and both leaf scans, from no start and from a given one; trees built on one
+// thread and on several.
 
 #include <rapidcheck/catch.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 #include <vector>
 
-#include "poles/nearest_point_tree.hpp"
+#include "poles/point_tree.hpp"
+#include "rstruct/predicates/predicates.hpp"
 
 using rstruct::Point3;
-using rstruct::poles::detail::NearestPointTree;
+using rstruct::poles::detail::PointTree;
 
 namespace {
 
@@ -35,8 +39,8 @@ std::uint32_t scan_nearest(std::span<const Point3> points, const Point3& q) {
 
 /// Every query against the scan, from no start and from a start drawn among the points.
 void check_queries(std::span<const Point3> points, std::span<const Point3> queries,
-                   std::uint32_t leaf, NearestPointTree::Scan scan, std::mt19937_64& rng) {
-  const NearestPointTree tree(points, leaf, scan);
+                   std::uint32_t leaf, PointTree::Scan scan, std::mt19937_64& rng) {
+  const PointTree tree(points, leaf, scan);
   std::uniform_int_distribution<std::uint32_t> any(0,
                                                    static_cast<std::uint32_t>(points.size() - 1));
   for (const Point3& q : queries) {
@@ -48,6 +52,27 @@ void check_queries(std::span<const Point3> points, std::span<const Point3> queri
     RC_ASSERT(tree.nearest_from(q, expected, rstruct::squared_distance(q, points[expected])) ==
               expected);
   }
+}
+
+/// The candidates within r of q, sorted, against the exact ball: each point once, every
+/// point of the closed ball among them, none past the inflated radius.
+void check_candidates(const PointTree& tree, std::span<const Point3> points, const Point3& q,
+                      double r) {
+  std::vector<std::uint32_t> found;
+  tree.candidates_within(q, r, found);
+  std::sort(found.begin(), found.end());
+  RC_ASSERT(std::adjacent_find(found.begin(), found.end()) == found.end());
+  const double limit = PointTree::inflated_squared_radius(r);
+  std::size_t at = 0;
+  for (std::uint32_t i = 0; i < points.size(); ++i) {
+    const bool candidate = at < found.size() && found[at] == i;
+    at += candidate ? 1 : 0;
+    if (rstruct::predicates::side_of_ball(points[i], q, r) != rstruct::Sign::positive) {
+      RC_ASSERT(candidate);
+    }
+    if (candidate) RC_ASSERT(rstruct::squared_distance(q, points[i]) <= limit);
+  }
+  RC_ASSERT(at == found.size());  // no index out of range
 }
 
 enum class Shape { uniform, clustered, grid, line, duplicates };
@@ -102,7 +127,7 @@ TEST_CASE("nearest point: the tree returns the scan's point, ties to the smalles
     const double offset = *rc::gen::element(0.0, 1e6, -3.5e8);
     const auto leaf = *rc::gen::element(1U, 2U, 5U, 64U);
     const auto scan =
-        *rc::gen::element(NearestPointTree::Scan::best, NearestPointTree::Scan::portable);
+        *rc::gen::element(PointTree::Scan::best, PointTree::Scan::portable);
     RC_LOG() << "seed " << seed << "\n";
     std::mt19937_64 rng(seed);
     const auto points = make_points(shape, n, scale, offset, rng);
@@ -117,6 +142,70 @@ TEST_CASE("nearest point: the tree returns the scan's point, ties to the smalles
     queries.push_back({offset + 1e3 * scale, -1e3 * scale, 7 * scale});
     check_queries(points, queries, leaf, scan, rng);
   });
+}
+
+TEST_CASE("candidates within r: every point of the exact ball, nothing past the inflated radius") {
+  rc::prop("tree vs exact ball", [] {
+    const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+    const auto shape = *rc::gen::element(Shape::uniform, Shape::clustered, Shape::grid, Shape::line,
+                                         Shape::duplicates);
+    const auto n = *rc::gen::inRange<std::size_t>(1, 700);
+    const double scale = *rc::gen::element(1.0, 1e-3, 250.0, 1e-160, 1e200);
+    const double offset = *rc::gen::element(0.0, 1e6, -3.5e8);
+    const auto leaf = *rc::gen::element(1U, 2U, 5U, 64U);
+    const auto scan = *rc::gen::element(PointTree::Scan::best, PointTree::Scan::portable);
+    RC_LOG() << "seed " << seed << "\n";
+    std::mt19937_64 rng(seed);
+    const auto points = make_points(shape, n, scale, offset, rng);
+    const PointTree tree(points, leaf, scan);
+    std::vector<Point3> queries = make_points(shape, 10, scale, offset, rng);
+    if (shape == Shape::grid) {
+      for (Point3& q : queries) q = {q.x + 0.5 * scale, q.y + 0.5 * scale, q.z};
+    }
+    for (std::size_t k = 0; k < 5; ++k) queries.push_back(points[(k * 37) % n]);
+    queries.push_back({offset + 1e3 * scale, -1e3 * scale, 7 * scale});
+    std::uniform_real_distribution<double> fraction(0.0, 1.0);
+    for (const Point3& q : queries) {
+      // No radius, a random one, a huge one, and the rounded distances of points of the
+      // set: points on or next to the sphere (grid: many at once).
+      check_candidates(tree, points, q, 0.0);
+      check_candidates(tree, points, q, fraction(rng) * 0.5 * scale);
+      check_candidates(tree, points, q, 5e3 * scale);
+      for (std::size_t k = 0; k < 3; ++k) {
+        const Point3& p = points[static_cast<std::size_t>(fraction(rng) * static_cast<double>(n)) % n];
+        const double r = rstruct::distance(q, p);  // overflows at the largest scale
+        if (std::isfinite(r)) check_candidates(tree, points, q, r);
+      }
+    }
+  });
+}
+
+TEST_CASE("candidates within r: a tree built on several threads finds the same sets") {
+  for (const Shape shape : {Shape::uniform, Shape::grid, Shape::clustered}) {
+    std::mt19937_64 rng(41 + static_cast<int>(shape));
+    const auto points = make_points(shape, 150'000, 1.0, 0.0, rng);
+    const auto queries = make_points(shape, 100, 1.0, 0.0, rng);
+    const PointTree one(points, 64, PointTree::Scan::best, 1);
+    for (const unsigned threads : {2U, 4U}) {
+      const PointTree several(points, 64, PointTree::Scan::best, threads);
+      std::size_t differing = 0;
+      std::size_t total = 0;
+      for (const Point3& q : queries) {
+        for (const double r : {0.0, 0.01, 0.1, 0.5}) {
+          std::vector<std::uint32_t> a, b;
+          one.candidates_within(q, r, a);
+          several.candidates_within(q, r, b);
+          std::sort(a.begin(), a.end());
+          std::sort(b.begin(), b.end());
+          differing += a != b;
+          total += a.size();
+        }
+      }
+      INFO("shape " << static_cast<int>(shape) << ", threads " << threads);
+      CHECK(differing == 0);
+      CHECK(total > 0);
+    }
+  }
 }
 
 TEST_CASE("nearest point: equidistant points in different subtrees, smallest index wins") {
@@ -145,8 +234,8 @@ TEST_CASE("nearest point: equidistant points in different subtrees, smallest ind
       }
     }
     for (const std::uint32_t leaf : {1U, 4U, 64U}) {
-      for (const auto scan : {NearestPointTree::Scan::best, NearestPointTree::Scan::portable}) {
-        const NearestPointTree tree(points, leaf, scan);
+      for (const auto scan : {PointTree::Scan::best, PointTree::Scan::portable}) {
+        const PointTree tree(points, leaf, scan);
         CHECK(tree.nearest({0, 0, 0}) == expected);
         // From the largest-index corner: the search must still find the smaller one.
         std::uint32_t last_corner = 0;
@@ -177,7 +266,7 @@ TEST_CASE("nearest point: a tree built on several threads answers as the scan do
     for (const Point3& q : queries) expected.push_back(scan_nearest(points, q));
     for (const unsigned threads : {2U, 3U, 4U}) {
       for (const std::uint32_t leaf : {1U, 64U}) {
-        const NearestPointTree tree(points, leaf, NearestPointTree::Scan::best, threads);
+        const PointTree tree(points, leaf, PointTree::Scan::best, threads);
         CHECK(tree.size() == points.size());
         std::size_t wrong = 0;
         for (std::size_t k = 0; k < queries.size(); ++k) {
@@ -197,10 +286,10 @@ TEST_CASE("nearest point: a tree built on several threads answers as the scan do
 TEST_CASE("nearest point: degenerate sets") {
   SECTION("one point, and many copies of one point") {
     const std::vector<Point3> one = {{1, 2, 3}};
-    CHECK(NearestPointTree(one).nearest({-5, 0, 0}) == 0);
+    CHECK(PointTree(one).nearest({-5, 0, 0}) == 0);
     const std::vector<Point3> same(1000, Point3{1, 2, 3});
     for (const std::uint32_t leaf : {1U, 64U}) {
-      const NearestPointTree tree(same, leaf);
+      const PointTree tree(same, leaf);
       CHECK(tree.nearest({0, 0, 0}) == 0);
       CHECK(tree.nearest_from({0, 0, 0}, 999, rstruct::squared_distance({0, 0, 0}, same[0])) == 0);
     }
@@ -212,24 +301,27 @@ TEST_CASE("nearest point: degenerate sets") {
     for (int k = 0; k < 1000; ++k) points.push_back({std::ldexp(1.0, -k), 0, 0});
     std::mt19937_64 rng(5);
     std::shuffle(points.begin(), points.end(), rng);
-    const NearestPointTree tree(points, 1);
+    const PointTree tree(points, 1);
     for (const double x : {0.0, 1e-300, 0x1p-500, 0.3, 0.75, 2.0}) {
       CHECK(tree.nearest({x, 0, 0}) == scan_nearest(points, {x, 0, 0}));
     }
   }
   SECTION("no points") {
-    const NearestPointTree tree(std::span<const Point3>{});
+    const PointTree tree(std::span<const Point3>{});
     CHECK(tree.size() == 0);
     CHECK(tree.nearest_from({0, 0, 0}, 7, 1.0) == 7);
+    std::vector<std::uint32_t> found;
+    tree.candidates_within({0, 0, 0}, 1.0, found);
+    CHECK(found.empty());
   }
 }
 
 TEST_CASE("nearest point: the vector scan is used where the processor has AVX2") {
   const std::vector<Point3> points = {{0, 0, 0}, {1, 1, 1}};
-  const NearestPointTree portable(points, 64, NearestPointTree::Scan::portable);
+  const PointTree portable(points, 64, PointTree::Scan::portable);
   CHECK_FALSE(portable.vectorized());
 #if defined(__x86_64__)
-  const NearestPointTree best(points, 64, NearestPointTree::Scan::best);
+  const PointTree best(points, 64, PointTree::Scan::best);
   CHECK(best.vectorized() == (__builtin_cpu_supports("avx2") != 0));
 #endif
 }
