@@ -10,18 +10,21 @@ namespace rstruct::setcover::detail {
 
 namespace {
 
-/// Whether every allowed column costs the same positive amount c, and every count μ_j is
-/// below 2^26: then c / μ falls strictly as μ grows (consecutive values differ by a
-/// relative 1/μ, far above the rounding), so the score order is the order of μ.
-bool equal_costs_and_counts(const Instance& inst, std::span<const char> allowed,
-                            const std::vector<std::int32_t>& mu) {
+/// The largest count μ_j of an allowed column if every allowed column costs the same
+/// positive amount c and every count is below 2^26 (then c / μ falls strictly as μ grows:
+/// consecutive values differ by a relative 1/μ, far above the rounding, so the score order
+/// is the order of μ); otherwise -1.
+std::int32_t largest_count_if_equal_costs(const Instance& inst, std::span<const char> allowed,
+                                          const std::vector<std::int32_t>& mu) {
   double c = 0.0;
+  std::int32_t top = 0;
   for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
     if (!allowed.empty() && !allowed[j]) continue;
     if (c == 0.0) c = inst.cost(j);
-    if (!(inst.cost(j) == c && c > 0.0 && mu[j] < (1 << 26))) return false;
+    if (!(inst.cost(j) == c && c > 0.0 && mu[j] < (1 << 26))) return -1;
+    top = std::max(top, mu[j]);
   }
-  return true;
+  return top;
 }
 
 }  // namespace
@@ -104,15 +107,12 @@ std::vector<std::int32_t> greedy_cover(const Instance& inst, std::span<const dou
     }
   };
   for (std::int32_t j : start) take(j);
-  if (!weighted && equal_costs_and_counts(inst, allowed, mu)) {
+  if (std::int32_t top = weighted ? -1 : largest_count_if_equal_costs(inst, allowed, mu);
+      top >= 0) {
     // The first column in (score, index) order is then the one with the most uncovered
     // rows, the smallest index among those: a bucket per count μ, each a min-heap of
     // column indices. A column whose μ fell since it was queued is moved to its bucket
     // when it comes up (μ only falls, so the largest non-empty bucket only falls too).
-    std::int32_t top = 0;
-    for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
-      if (allowed.empty() || allowed[j]) top = std::max(top, mu[j]);
-    }
     std::vector<std::vector<std::int32_t>> bucket(static_cast<std::size_t>(top) + 1);
     for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
       // Increasing indices: every bucket is a min-heap as it is filled.
