@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <optional>
 #include <string>
 #include <thread>
 
@@ -69,28 +68,27 @@ std::uint32_t range_start(std::size_t m, unsigned ranges, unsigned k) {
 /// Per sample: the incident tetrahedra chosen as p⁺ and p⁻ (kNoTet if none), and the
 /// vector p⁺ − s.
 struct Choice {
-  /// Per tetrahedron, its squared circumradius, in one array per range of tetrahedra (see
-  /// range_start), each allocated and filled by its range's thread. Smaller arrays fit
-  /// more often in pages freed earlier (see analyse_poles). The centres are computed again
-  /// where they are needed (the directions of the candidates for p⁻, the poles): the same
-  /// doubles, from the same four points in the same order. Storing the centres instead
-  /// (24 bytes per tetrahedron: 495 MB of mostly fresh pages for the 2.06·10^7 tetrahedra
-  /// of 10^6 torus samples) took longer: bench_seed --torus 1000000 --levels 0.5:0.03, 7
-  /// interleaved pairs, poles stage 1.51-2.42 s (median 2.04) -> 1.70-2.89 s (median
-  /// 1.77), peak memory 1079-1176 -> 1039-1053 MiB, the same output.
-  std::vector<std::vector<double>> squared_radii;
-  unsigned ranges() const { return static_cast<unsigned>(squared_radii.size()); }
+  /// Per tetrahedron, its circumcentre's offset (Circumsphere::offset; the squared radius
+  /// is its squared norm, computed again where needed: the same value, in three quarters
+  /// of the memory), in one array per range of tetrahedra (see range_start), each
+  /// allocated and filled by its range's thread. Smaller arrays fit more often in pages
+  /// freed earlier (see analyse_poles).
+  std::vector<std::vector<Vec3>> offsets;
+  std::size_t tetrahedra = 0;
+  static detail::Circumsphere sphere_of(const Vec3& offset) {
+    return {offset, squared_norm(offset)};
+  }
+  /// The sphere of tetrahedron t (its range found by a scan: not for every tetrahedron).
+  detail::Circumsphere sphere(std::uint32_t t) const {
+    unsigned k = 0;
+    while (k + 1 < ranges() && t >= range_start(tetrahedra, ranges(), k + 1)) ++k;
+    return sphere_of(offsets[k][t - range_start(tetrahedra, ranges(), k)]);
+  }
+  unsigned ranges() const { return static_cast<unsigned>(offsets.size()); }
   std::vector<std::uint32_t> first, second;
   std::vector<double> first_r2, second_r2;
   std::vector<Vec3> first_direction;
 };
-
-/// The circumsphere of tetrahedron t.
-detail::Circumsphere sphere_of(const TetrahedronSoup& soup, std::uint32_t t) {
-  const auto& q = soup.tets[t];
-  return detail::circumsphere(soup.vertices[q[0]], soup.vertices[q[1]], soup.vertices[q[2]],
-                              soup.vertices[q[3]]);
-}
 
 /// Whether tetrahedron t wins a tie in the circumradius against `current` (kNoTet: no
 /// tetrahedron yet): the one whose vertex ids, sorted, come first lexicographically. So
@@ -128,12 +126,13 @@ struct Best {
 /// candidate.
 void spheres_and_first_poles(const TetrahedronSoup& soup, Choice& choice, unsigned range,
                              std::uint32_t begin, std::uint32_t end, std::uint32_t n, Best best) {
-  std::vector<double>& squared_radii = choice.squared_radii[range];
-  squared_radii.resize(end - begin);
+  std::vector<Vec3>& offsets = choice.offsets[range];
+  offsets.resize(end - begin);
   for (std::uint32_t t = begin; t < end; ++t) {
     const auto& q = soup.tets[t];
-    const detail::Circumsphere cs = sphere_of(soup, t);
-    squared_radii[t - begin] = cs.squared_radius;
+    const detail::Circumsphere cs = detail::circumsphere(
+        soup.vertices[q[0]], soup.vertices[q[1]], soup.vertices[q[2]], soup.vertices[q[3]]);
+    offsets[t - begin] = cs.offset;
     for (const std::uint32_t s : q) {
       if (s < n && better(soup, cs.squared_radius, t, best.r2[s], best.tet[s])) {
         best.r2[s] = cs.squared_radius;
@@ -146,18 +145,17 @@ void spheres_and_first_poles(const TetrahedronSoup& soup, Choice& choice, unsign
 /// Among the tetrahedra [begin, end), each sample's p⁻ candidate (its p⁺ chosen).
 void second_poles(const TetrahedronSoup& soup, const Choice& choice, unsigned range,
                   std::uint32_t begin, std::uint32_t end, std::uint32_t n, Best best) {
-  const std::vector<double>& squared_radii = choice.squared_radii[range];
+  const std::vector<Vec3>& offsets = choice.offsets[range];
   for (std::uint32_t t = begin; t < end; ++t) {
     const auto& q = soup.tets[t];
-    const double r2 = squared_radii[t - begin];
-    std::optional<detail::Circumsphere> cs;  // only for a candidate that beats the best
+    const detail::Circumsphere cs = Choice::sphere_of(offsets[t - begin]);
     for (const std::uint32_t s : q) {
-      if (s >= n || choice.first[s] == t || !better(soup, r2, t, best.r2[s], best.tet[s])) {
+      if (s >= n || choice.first[s] == t ||
+          !better(soup, cs.squared_radius, t, best.r2[s], best.tet[s])) {
         continue;
       }
-      if (!cs) cs = sphere_of(soup, t);
-      if (dot(direction(soup, *cs, t, s), choice.first_direction[s]) < 0) {
-        best.r2[s] = r2;
+      if (dot(direction(soup, cs, t, s), choice.first_direction[s]) < 0) {
+        best.r2[s] = cs.squared_radius;
         best.tet[s] = t;
       }
     }
@@ -218,7 +216,8 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
       1, std::min<std::size_t>(threads != 0 ? threads : hardware,
                                soup.tets.size() / std::max<std::size_t>(1, tetrahedra_per_thread))));
   const auto samples = static_cast<std::uint32_t>(n);
-  choice.squared_radii.resize(ranges);
+  choice.offsets.resize(ranges);
+  choice.tetrahedra = soup.tets.size();
   choose_in_ranges(soup, ranges, choice.first, choice.first_r2,
                    [&](unsigned k, std::uint32_t begin, std::uint32_t end, Best best) {
                      spheres_and_first_poles(soup, choice, k, begin, end, samples, best);
@@ -226,7 +225,7 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
   parallel_chunks(n, ranges, std::size_t{1} << 14, [&](std::size_t begin, std::size_t end, unsigned) {
     for (auto s = static_cast<std::uint32_t>(begin); s < end; ++s) {
       const std::uint32_t t = choice.first[s];
-      if (t != kNoTet) choice.first_direction[s] = direction(soup, sphere_of(soup, t), t, s);
+      if (t != kNoTet) choice.first_direction[s] = direction(soup, choice.sphere(t), t, s);
     }
   });
   choose_in_ranges(soup, ranges, choice.second, choice.second_r2,
@@ -305,7 +304,7 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
       for (int which = 0; which < 2; ++which) {
         if ((owns[s] >> which & 1u) == 0) continue;
         const std::uint32_t t = chosen(s, which);
-        const detail::Circumsphere cs = sphere_of(soup, t);
+        const detail::Circumsphere cs = choice.sphere(t);
         poles.centre[next] = soup.vertices[soup.tets[t][0]] + cs.offset;
         poles.radius[next] = std::sqrt(cs.squared_radius);
         poles.tet[next] = t;
