@@ -229,6 +229,15 @@ std::uint32_t PointTree::build(std::vector<Node>& nodes, std::uint32_t* first,
   return id;
 }
 
+void PointTree::root_gaps(const double* q, double* cut) const {
+  for (std::size_t d = 0; d < 3; ++d) {
+    const double gap = q[d] < root_box_.lo[d]   ? root_box_.lo[d] - q[d]
+                       : q[d] > root_box_.hi[d] ? q[d] - root_box_.hi[d]
+                                                : 0.0;
+    cut[d] = gap * gap;
+  }
+}
+
 std::uint32_t PointTree::nearest(const Point3& q) const {
   return nearest_from(q, kNoIndex, HUGE_VAL);
 }
@@ -238,14 +247,8 @@ std::uint32_t PointTree::nearest_from(const Point3& q, std::uint32_t index,
   Best best{squared_distance, index};
   if (nodes_.empty()) return index;
   const double query[3] = {q.x, q.y, q.z};
-  // Squared gaps between q and the root's box, per axis (zero inside it).
   double cut[3];
-  for (std::size_t d = 0; d < 3; ++d) {
-    const double gap = query[d] < root_box_.lo[d]   ? root_box_.lo[d] - query[d]
-                       : query[d] > root_box_.hi[d] ? query[d] - root_box_.hi[d]
-                                                    : 0.0;
-    cut[d] = gap * gap;
-  }
+  root_gaps(query, cut);
   if (!skippable(lower_bound(cut), best.d2)) search(0, query, cut, best);
   return best.index;
 }
@@ -292,12 +295,7 @@ void PointTree::candidates_within(const Point3& q, double r,
   if (nodes_.empty()) return;
   const double query[3] = {q.x, q.y, q.z};
   double cut[3];
-  for (std::size_t d = 0; d < 3; ++d) {
-    const double gap = query[d] < root_box_.lo[d]   ? root_box_.lo[d] - query[d]
-                       : query[d] > root_box_.hi[d] ? query[d] - root_box_.hi[d]
-                                                    : 0.0;
-    cut[d] = gap * gap;
-  }
+  root_gaps(query, cut);
   // A subtree is skipped when skippable() puts all its points' squared distances above
   // the rounded r·r (the argument of skippable() holds with r·r for the minimum: a
   // relative error of 2⁻⁵³ more); a point is a candidate when its computed squared

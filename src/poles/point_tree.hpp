@@ -89,6 +89,8 @@ class PointTree {
   std::uint32_t build(std::vector<Node>& nodes, std::uint32_t* first, std::uint32_t* last,
                       const Box3& region, const Box3& tight, std::span<const Point3> points,
                       unsigned depth, unsigned threads) const;
+  /// The squared gaps between q and the root's box, per axis (zero inside it), into cut.
+  void root_gaps(const double* q, double* cut) const;
   void search(std::uint32_t node, const double* q, double* cut, Best& best) const;
   void collect(std::uint32_t node, const double* q, double* cut, double r2, double limit,
                std::vector<std::uint32_t>& out) const;

@@ -114,98 +114,49 @@ std::vector<Point3> make_points(Shape shape, std::size_t n, double scale, double
   return points;
 }
 
+/// A drawn case: a point set of a drawn shape, scale and offset, a tree's leaf size and
+/// scan, and queries: `query_count` new points of the same shape (grid: half-lattice
+/// points, the centres of cells and edges, equidistant from several points), five points
+/// of the set and a point far outside.
+struct DrawnCase {
+  std::mt19937_64 rng;
+  double scale = 1;
+  std::vector<Point3> points;
+  std::vector<Point3> queries;
+  std::uint32_t leaf = 64;
+  PointTree::Scan scan = PointTree::Scan::best;
+};
+
+DrawnCase draw_case(std::size_t query_count) {
+  const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+  const auto shape = *rc::gen::element(Shape::uniform, Shape::clustered, Shape::grid, Shape::line,
+                                       Shape::duplicates);
+  const auto n = *rc::gen::inRange<std::size_t>(1, 700);
+  DrawnCase c;
+  c.rng.seed(seed);
+  // Scales whose squares stay normal, reach the subnormals, or overflow to infinity.
+  c.scale = *rc::gen::element(1.0, 1e-3, 250.0, 1e-160, 1e200);
+  const double offset = *rc::gen::element(0.0, 1e6, -3.5e8);
+  c.leaf = *rc::gen::element(1U, 2U, 5U, 64U);
+  c.scan = *rc::gen::element(PointTree::Scan::best, PointTree::Scan::portable);
+  RC_LOG() << "seed " << seed << "\n";
+  c.points = make_points(shape, n, c.scale, offset, c.rng);
+  c.queries = make_points(shape, query_count, c.scale, offset, c.rng);
+  if (shape == Shape::grid) {
+    for (Point3& q : c.queries) q = {q.x + 0.5 * c.scale, q.y + 0.5 * c.scale, q.z};
+  }
+  for (std::size_t k = 0; k < 5; ++k) c.queries.push_back(c.points[(k * 37) % n]);
+  c.queries.push_back({offset + 1e3 * c.scale, -1e3 * c.scale, 7 * c.scale});
+  return c;
+}
+
 }  // namespace
 
 TEST_CASE("nearest point: the tree returns the scan's point, ties to the smallest index") {
   rc::prop("tree vs scan", [] {
-    const auto seed = *rc::gen::arbitrary<std::uint64_t>();
-    const auto shape = *rc::gen::element(Shape::uniform, Shape::clustered, Shape::grid, Shape::line,
-                                         Shape::duplicates);
-    const auto n = *rc::gen::inRange<std::size_t>(1, 700);
-    // Scales whose squares stay normal, reach the subnormals, or overflow to infinity.
-    const double scale = *rc::gen::element(1.0, 1e-3, 250.0, 1e-160, 1e200);
-    const double offset = *rc::gen::element(0.0, 1e6, -3.5e8);
-    const auto leaf = *rc::gen::element(1U, 2U, 5U, 64U);
-    const auto scan =
-        *rc::gen::element(PointTree::Scan::best, PointTree::Scan::portable);
-    RC_LOG() << "seed " << seed << "\n";
-    std::mt19937_64 rng(seed);
-    const auto points = make_points(shape, n, scale, offset, rng);
-    // Queries: new points of the same shape (grid: lattice and half-lattice points, the
-    // centres of cells and edges, equidistant from several points), points of the set,
-    // and points far outside.
-    std::vector<Point3> queries = make_points(shape, 20, scale, offset, rng);
-    if (shape == Shape::grid) {
-      for (Point3& q : queries) q = {q.x + 0.5 * scale, q.y + 0.5 * scale, q.z};
-    }
-    for (std::size_t k = 0; k < 5; ++k) queries.push_back(points[k % n]);
-    queries.push_back({offset + 1e3 * scale, -1e3 * scale, 7 * scale});
-    check_queries(points, queries, leaf, scan, rng);
+    DrawnCase c = draw_case(20);
+    check_queries(c.points, c.queries, c.leaf, c.scan, c.rng);
   });
-}
-
-TEST_CASE("candidates within r: every point of the exact ball, nothing past the inflated radius") {
-  rc::prop("tree vs exact ball", [] {
-    const auto seed = *rc::gen::arbitrary<std::uint64_t>();
-    const auto shape = *rc::gen::element(Shape::uniform, Shape::clustered, Shape::grid, Shape::line,
-                                         Shape::duplicates);
-    const auto n = *rc::gen::inRange<std::size_t>(1, 700);
-    const double scale = *rc::gen::element(1.0, 1e-3, 250.0, 1e-160, 1e200);
-    const double offset = *rc::gen::element(0.0, 1e6, -3.5e8);
-    const auto leaf = *rc::gen::element(1U, 2U, 5U, 64U);
-    const auto scan = *rc::gen::element(PointTree::Scan::best, PointTree::Scan::portable);
-    RC_LOG() << "seed " << seed << "\n";
-    std::mt19937_64 rng(seed);
-    const auto points = make_points(shape, n, scale, offset, rng);
-    const PointTree tree(points, leaf, scan);
-    std::vector<Point3> queries = make_points(shape, 10, scale, offset, rng);
-    if (shape == Shape::grid) {
-      for (Point3& q : queries) q = {q.x + 0.5 * scale, q.y + 0.5 * scale, q.z};
-    }
-    for (std::size_t k = 0; k < 5; ++k) queries.push_back(points[(k * 37) % n]);
-    queries.push_back({offset + 1e3 * scale, -1e3 * scale, 7 * scale});
-    std::uniform_real_distribution<double> fraction(0.0, 1.0);
-    for (const Point3& q : queries) {
-      // No radius, a random one, a huge one, and the rounded distances of points of the
-      // set: points on or next to the sphere (grid: many at once).
-      check_candidates(tree, points, q, 0.0);
-      check_candidates(tree, points, q, fraction(rng) * 0.5 * scale);
-      check_candidates(tree, points, q, 5e3 * scale);
-      for (std::size_t k = 0; k < 3; ++k) {
-        const Point3& p = points[static_cast<std::size_t>(fraction(rng) * static_cast<double>(n)) % n];
-        const double r = rstruct::distance(q, p);  // overflows at the largest scale
-        if (std::isfinite(r)) check_candidates(tree, points, q, r);
-      }
-    }
-  });
-}
-
-TEST_CASE("candidates within r: a tree built on several threads finds the same sets") {
-  for (const Shape shape : {Shape::uniform, Shape::grid, Shape::clustered}) {
-    std::mt19937_64 rng(41 + static_cast<int>(shape));
-    const auto points = make_points(shape, 150'000, 1.0, 0.0, rng);
-    const auto queries = make_points(shape, 100, 1.0, 0.0, rng);
-    const PointTree one(points, 64, PointTree::Scan::best, 1);
-    for (const unsigned threads : {2U, 4U}) {
-      const PointTree several(points, 64, PointTree::Scan::best, threads);
-      std::size_t differing = 0;
-      std::size_t total = 0;
-      for (const Point3& q : queries) {
-        for (const double r : {0.0, 0.01, 0.1, 0.5}) {
-          std::vector<std::uint32_t> a, b;
-          one.candidates_within(q, r, a);
-          several.candidates_within(q, r, b);
-          std::sort(a.begin(), a.end());
-          std::sort(b.begin(), b.end());
-          differing += a != b;
-          total += a.size();
-        }
-      }
-      INFO("shape " << static_cast<int>(shape) << ", threads " << threads);
-      CHECK(differing == 0);
-      CHECK(total > 0);
-    }
-  }
 }
 
 TEST_CASE("nearest point: equidistant points in different subtrees, smallest index wins") {
@@ -324,4 +275,53 @@ TEST_CASE("nearest point: the vector scan is used where the processor has AVX2")
   const PointTree best(points, 64, PointTree::Scan::best);
   CHECK(best.vectorized() == (__builtin_cpu_supports("avx2") != 0));
 #endif
+}
+
+TEST_CASE("candidates within r: every point of the exact ball, nothing past the inflated radius") {
+  rc::prop("tree vs exact ball", [] {
+    DrawnCase c = draw_case(10);
+    const PointTree tree(c.points, c.leaf, c.scan);
+    const std::size_t n = c.points.size();
+    std::uniform_real_distribution<double> fraction(0.0, 1.0);
+    for (const Point3& q : c.queries) {
+      // No radius, a random one, a huge one, and the rounded distances of points of the
+      // set: points on or next to the sphere (grid: many at once).
+      check_candidates(tree, c.points, q, 0.0);
+      check_candidates(tree, c.points, q, fraction(c.rng) * 0.5 * c.scale);
+      check_candidates(tree, c.points, q, 5e3 * c.scale);
+      for (std::size_t k = 0; k < 3; ++k) {
+        const auto at = static_cast<std::size_t>(fraction(c.rng) * static_cast<double>(n)) % n;
+        const double r = rstruct::distance(q, c.points[at]);  // overflows at the largest scale
+        if (std::isfinite(r)) check_candidates(tree, c.points, q, r);
+      }
+    }
+  });
+}
+
+TEST_CASE("candidates within r: a tree built on several threads finds the same sets") {
+  for (const Shape shape : {Shape::uniform, Shape::grid, Shape::clustered}) {
+    std::mt19937_64 rng(41 + static_cast<int>(shape));
+    const auto points = make_points(shape, 150'000, 1.0, 0.0, rng);
+    const auto queries = make_points(shape, 100, 1.0, 0.0, rng);
+    const PointTree one(points, 64, PointTree::Scan::best, 1);
+    for (const unsigned threads : {2U, 4U}) {
+      const PointTree several(points, 64, PointTree::Scan::best, threads);
+      std::size_t differing = 0;
+      std::size_t total = 0;
+      for (const Point3& q : queries) {
+        for (const double r : {0.0, 0.01, 0.1, 0.5}) {
+          std::vector<std::uint32_t> a, b;
+          one.candidates_within(q, r, a);
+          several.candidates_within(q, r, b);
+          std::sort(a.begin(), a.end());
+          std::sort(b.begin(), b.end());
+          differing += a != b;
+          total += a.size();
+        }
+      }
+      INFO("shape " << static_cast<int>(shape) << ", threads " << threads);
+      CHECK(differing == 0);
+      CHECK(total > 0);
+    }
+  }
 }
