@@ -290,6 +290,26 @@ void PointTree::scan_leaf(const Node& node, const double* q, Best& best) const {
   }
 }
 
+#if defined(RSTRUCT_NEAREST_AVX2)
+namespace {
+
+/// The squared distances of the four points whose coordinates start at x, y, z from q
+/// (broadcast in qx, qy, qz), computed as the portable scans compute them:
+/// ((dx·dx + dy·dy) + dz·dz), no fused multiply-add (the target enables AVX2 only).
+__attribute__((target("avx2"))) inline __m256d squared_distances4(const double* x,
+                                                                  const double* y,
+                                                                  const double* z, __m256d qx,
+                                                                  __m256d qy, __m256d qz) {
+  const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(x), qx);
+  const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(y), qy);
+  const __m256d dz = _mm256_sub_pd(_mm256_loadu_pd(z), qz);
+  return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+                       _mm256_mul_pd(dz, dz));
+}
+
+}  // namespace
+#endif
+
 void PointTree::candidates_within(const Point3& q, double r,
                                   std::vector<std::uint32_t>& out) const {
   if (nodes_.empty()) return;
@@ -348,11 +368,7 @@ __attribute__((target("avx2"))) void PointTree::collect_leaf_avx2(
   const __m256d qz = _mm256_set1_pd(q[2]);
   const __m256d bound = _mm256_set1_pd(limit);
   for (std::uint32_t k = node.first; k < node.last; k += 4) {
-    const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(x_.get() + k), qx);
-    const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(y_.get() + k), qy);
-    const __m256d dz = _mm256_sub_pd(_mm256_loadu_pd(z_.get() + k), qz);
-    const __m256d d2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
-                                     _mm256_mul_pd(dz, dz));
+    const __m256d d2 = squared_distances4(x_.get() + k, y_.get() + k, z_.get() + k, qx, qy, qz);
     auto inside = static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(d2, bound, _CMP_LE_OQ)));
     for (; inside != 0; inside &= inside - 1) {
       out.push_back(index_[k + static_cast<std::uint32_t>(__builtin_ctz(inside))]);
@@ -376,11 +392,7 @@ __attribute__((target("avx2"))) void PointTree::scan_leaf_avx2(const Node& node,
   const __m256d qy = _mm256_set1_pd(q[1]);
   const __m256d qz = _mm256_set1_pd(q[2]);
   for (std::uint32_t k = node.first; k < node.last; k += 4) {
-    const __m256d dx = _mm256_sub_pd(_mm256_loadu_pd(x_.get() + k), qx);
-    const __m256d dy = _mm256_sub_pd(_mm256_loadu_pd(y_.get() + k), qy);
-    const __m256d dz = _mm256_sub_pd(_mm256_loadu_pd(z_.get() + k), qz);
-    const __m256d d2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
-                                     _mm256_mul_pd(dz, dz));
+    const __m256d d2 = squared_distances4(x_.get() + k, y_.get() + k, z_.get() + k, qx, qy, qz);
     // Candidates: d2 ≤ best (NaN padding compares false); the rare ones are resolved in
     // order, ties by index.
     if (_mm256_movemask_pd(_mm256_cmp_pd(d2, _mm256_set1_pd(best.d2), _CMP_LE_OQ)) == 0) continue;
