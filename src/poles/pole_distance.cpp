@@ -75,7 +75,7 @@ PoleDistance sample_pole_distance(std::span<const Point3> samples, const PoleSet
   // The nearest pole lies on the far side of a large empty ball, whose boundary crosses
   // many leaves: see point_tree.hpp for the tree, its .cpp for the figures.
   const detail::PointTree tree(poles.centre, detail::PointTree::kDefaultLeafSize,
-                                      detail::PointTree::Scan::best, threads);
+                               detail::PointTree::Scan::best, threads);
   const auto from_own_poles = [&](std::size_t i) {
     std::uint32_t best = kNoPole;
     double best_d2 = HUGE_VAL;
@@ -99,7 +99,7 @@ PoleDistance pole_distance(std::span<const Point3> points, std::span<const Point
   check_inputs(points, pole_centres);
   if (points.empty()) return {};
   const detail::PointTree tree(pole_centres, detail::PointTree::kDefaultLeafSize,
-                                      detail::PointTree::Scan::best, threads);
+                               detail::PointTree::Scan::best, threads);
   return run_queries(points, pole_centres, threads,
                      [&](std::size_t i) { return tree.nearest(points[i]); });
 }
