@@ -12,7 +12,7 @@
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
-#define RSTRUCT_NEAREST_AVX2 1
+#define RSTRUCT_POINT_TREE_AVX2 1
 #endif
 
 // Splits: at the middle of the node's region along its widest side (among the sides
@@ -69,7 +69,7 @@ Box3 box_of(const std::uint32_t* first, const std::uint32_t* last, std::span<con
 }
 
 bool avx2_available() {
-#if defined(RSTRUCT_NEAREST_AVX2)
+#if defined(RSTRUCT_POINT_TREE_AVX2)
   static const bool available = __builtin_cpu_supports("avx2") != 0;
   return available;
 #else
@@ -290,7 +290,7 @@ void PointTree::scan_leaf(const Node& node, const double* q, Best& best) const {
   }
 }
 
-#if defined(RSTRUCT_NEAREST_AVX2)
+#if defined(RSTRUCT_POINT_TREE_AVX2)
 namespace {
 
 /// The squared distances of the four points whose coordinates start at x, y, z from q
@@ -359,7 +359,7 @@ void PointTree::collect_leaf(const Node& node, const double* q, double limit,
   }
 }
 
-#if defined(RSTRUCT_NEAREST_AVX2)
+#if defined(RSTRUCT_POINT_TREE_AVX2)
 __attribute__((target("avx2"))) void PointTree::collect_leaf_avx2(
     const Node& node, const double* q, double limit, std::vector<std::uint32_t>& out) const {
   // The same operations as collect_leaf, four points at a time.
@@ -382,7 +382,7 @@ void PointTree::collect_leaf_avx2(const Node& node, const double* q, double limi
 }
 #endif
 
-#if defined(RSTRUCT_NEAREST_AVX2)
+#if defined(RSTRUCT_POINT_TREE_AVX2)
 __attribute__((target("avx2"))) void PointTree::scan_leaf_avx2(const Node& node,
                                                                const double* q,
                                                                Best& best) const {

@@ -145,14 +145,13 @@ class SimplexIndex {
       members[static_cast<std::size_t>(it - exponents.begin())].push_back(i);
     }
     for (std::size_t k = 0; k < members.size(); ++k) {
-      auto group = std::make_unique<Group>();
-      group->ids = members[k];
-      for (const std::uint32_t i : group->ids) {
-        group->centres.push_back(centre[i]);
-        group->max_radius = std::max(group->max_radius, radius[i]);
+      std::vector<Point3> centres;
+      double max_radius = 0;
+      for (const std::uint32_t i : members[k]) {
+        centres.push_back(centre[i]);
+        max_radius = std::max(max_radius, radius[i]);
       }
-      group->tree = std::make_unique<poles::detail::PointTree>(group->centres);
-      groups_.push_back(std::move(group));
+      groups_.push_back(Group{members[k], max_radius, poles::detail::PointTree(centres)});
     }
   }
 
@@ -164,10 +163,10 @@ class SimplexIndex {
   void within(const Point3& q, double d, std::vector<std::uint32_t>& out) const {
     out.clear();
     std::vector<std::uint32_t> found;
-    for (const auto& group : groups_) {
+    for (const Group& group : groups_) {
       found.clear();
-      group->tree->candidates_within(q, d + group->max_radius, found);
-      for (const std::uint32_t k : found) out.push_back(group->ids[k]);
+      group.tree.candidates_within(q, d + group.max_radius, found);
+      for (const std::uint32_t k : found) out.push_back(group.ids[k]);
     }
   }
 
@@ -190,13 +189,12 @@ class SimplexIndex {
  private:
   struct Group {
     std::vector<std::uint32_t> ids;
-    std::vector<Point3> centres;
     double max_radius = 0;
-    std::unique_ptr<poles::detail::PointTree> tree;
+    poles::detail::PointTree tree;  // over the balls' centres, indices into ids
   };
   std::vector<EmbeddedSimplex> simplices_;
   std::vector<Point3> position_;
-  std::vector<std::unique_ptr<Group>> groups_;
+  std::vector<Group> groups_;
 };
 
 }  // namespace rstruct::lemmas

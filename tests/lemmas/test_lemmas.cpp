@@ -314,7 +314,7 @@ void check_alpha_shapes(const Instance& in, Table& t, UpperBoundFailures& upper)
       vertex_positions.push_back(poles.centre[p]);
     }
   }
-  const auto vertex_tree = std::make_unique<rstruct::poles::detail::PointTree>(vertex_positions);
+  const rstruct::poles::detail::PointTree vertex_tree(vertex_positions);
   double smallest_ratio = 1.0;
   const std::size_t n = in.samples.size();
   const std::size_t step = (n + kCorollary55Samples - 1) / kCorollary55Samples;
@@ -341,7 +341,7 @@ void check_alpha_shapes(const Instance& in, Table& t, UpperBoundFailures& upper)
       const std::uint32_t p = in.analysis.dhat.nearest[s];
       double gap = HUGE_VAL;
       near.clear();  // candidates_within appends
-      vertex_tree->candidates_within(poles.centre[p], poles.radius[p], near);
+      vertex_tree.candidates_within(poles.centre[p], poles.radius[p], near);
       for (const std::uint32_t k : near) {
         gap = std::min(gap, rstruct::distance(poles.centre[p], poles.centre[vertex_tree_ids[k]]));
       }
