@@ -341,7 +341,9 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
   rt_stage.finish();
 
   Report::Stage stars_stage(rep, "vertex stars");
-  const triangulation::VertexStars stars(rt, options.threads);
+  // The neighbour lists are left to the dual complex's edge pass, which reads every star.
+  triangulation::VertexStars stars(rt, options.threads, std::size_t{4} << 20,
+                                   triangulation::VertexStars::Neighbors::deferred);
   stars_stage.finish();
 
   Report::Stage dual_stage(rep, "dual complex");

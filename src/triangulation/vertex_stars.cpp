@@ -2,12 +2,13 @@
 
 #include <algorithm>
 
+#include "rstruct/core/assert.hpp"
 #include "rstruct/core/parallel.hpp"
 
 namespace rstruct::triangulation {
 
 VertexStars::VertexStars(const RegularTriangulation3& rt, unsigned threads,
-                         std::size_t cells_per_thread) {
+                         std::size_t cells_per_thread, Neighbors neighbors) {
   const std::size_t n = rt.number_of_points();
   // Stars: the cells are counted per vertex, then written in increasing id order (every
   // star ends up sorted). The writes land all over the array: with several threads each
@@ -42,6 +43,25 @@ VertexStars::VertexStars(const RegularTriangulation3& rt, unsigned threads,
     });
   }
 
+  if (neighbors == Neighbors::build) build_neighbors(rt, threads);
+}
+
+void VertexStars::set_neighbors(const RegularTriangulation3& rt, std::vector<std::size_t> offsets,
+                                std::vector<VertexId> lists) {
+  RSTRUCT_ASSERT_MSG(offsets.size() == size() + 1 && offsets.back() == lists.size(),
+                     "VertexStars::set_neighbors: offsets do not match the stars");
+  neighbor_offsets_ = std::move(offsets);
+  neighbors_ = std::move(lists);
+  if constexpr (check_level() >= 2) {
+    VertexStars built(rt, 1, std::size_t{4} << 20, Neighbors::deferred);
+    built.build_neighbors(rt, 1);
+    RSTRUCT_ASSERT_MSG(built.neighbor_offsets_ == neighbor_offsets_ && built.neighbors_ == neighbors_,
+                       "VertexStars::set_neighbors: the lists are not the stars' neighbours");
+  }
+}
+
+void VertexStars::build_neighbors(const RegularTriangulation3& rt, unsigned threads) {
+  const std::size_t n = size();
   // Neighbours: the other finite vertices of the star, sorted and deduplicated. Each
   // chunk of vertices fills its own list; the lists are then concatenated in order.
   constexpr std::size_t kChunk = 4096;

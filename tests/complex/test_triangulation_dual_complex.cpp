@@ -28,9 +28,20 @@ void check_same(const std::vector<Point3>& centres, const std::vector<double>& w
   const RegularTriangulation3 rt(centres, weights);
   const DualComplex reference = dual_complex(rt);
   const SimplicialComplex expected = reference.complex();
+  const VertexStars built(rt, 1);
   for (const unsigned threads : {1u, 3u}) {
-    const VertexStars stars(rt, threads);
+    // Neighbour lists built by the stars, or deferred to the edge pass (which must then
+    // install the same lists).
+    const auto neighbors = threads == 1 ? VertexStars::Neighbors::build
+                                        : VertexStars::Neighbors::deferred;
+    VertexStars stars(rt, threads, std::size_t{4} << 20, neighbors);
     const TriangulationDualComplex k = classify_dual_complex(rt, stars, threads);
+    RC_ASSERT(stars.has_neighbors());
+    for (triangulation::VertexId v = 0; v < centres.size(); ++v) {
+      const auto mine = stars.neighbors(v);
+      const auto expected = built.neighbors(v);
+      RC_ASSERT(std::equal(mine.begin(), mine.end(), expected.begin(), expected.end()));
+    }
     RC_ASSERT(k.complex.is_valid());
     RC_ASSERT(k.complex.vertices() == expected.vertices());
     RC_ASSERT(k.complex.edges() == expected.edges());

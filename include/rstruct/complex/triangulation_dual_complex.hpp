@@ -15,7 +15,9 @@
 /// Top-down, as in dual_complex.hpp: a finite cell is in K iff its orthosphere has power
 /// ≤ 0; a lower simplex σ is in K iff one of its cofaces is, or σ is unattached (no vertex
 /// p of a coface has π_p(z_σ) < π_σ(z_σ)) and π_σ(z_σ) ≤ 0. The four stages (cells,
-/// facets, edges, vertices) each run over their simplices in parallel.
+/// facets, edges, vertices) each run over their simplices in parallel. A simplex with two
+/// balls that are certainly disjoint (disjoint_balls.hpp) has π_σ(z_σ) > 0: the cell stage
+/// records such pairs, and the facets and edges of a pair skip the predicates.
 
 #include <array>
 #include <cstddef>
@@ -37,11 +39,13 @@ struct TriangulationDualComplex {
 };
 
 /// K of the weighted points of `rt` (hidden and merged points are in no simplex).
+/// If the neighbour lists of `stars` are deferred (VertexStars::Neighbors::deferred), the
+/// edge pass, which reads every star, lists them and installs them in `stars`.
 /// \pre `stars` was built from `rt`.
 /// \throws InvalidInput if a simplex of `rt` is affinely degenerate (never, for a valid
 ///   regular triangulation); InternalError if the classified set is not closed under faces.
 TriangulationDualComplex classify_dual_complex(const triangulation::RegularTriangulation3& rt,
-                                               const triangulation::VertexStars& stars,
+                                               triangulation::VertexStars& stars,
                                                unsigned threads = 0);
 
 }  // namespace rstruct::complex
