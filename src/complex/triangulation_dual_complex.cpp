@@ -223,9 +223,14 @@ class Classifier {
   /// 1.17 -> 1.03 s; the stars alone 0.27-0.36 -> 0.08-0.11 s).
   void classify_edges(VertexId v, WorkerLists& out, NeighborChunk* chunk) {
     const auto cells = stars_.cells(v);
-    // Built lists: a vertex with no higher neighbour has nothing to do (deferred ones: the
-    // star is read to find whether it has any).
-    if (chunk == nullptr && (stars_.neighbors(v).empty() || stars_.neighbors(v).back() < v)) return;
+    // v's neighbours: with built lists all of them, and a vertex with no higher neighbour
+    // has nothing to do; with deferred ones only the higher, listed below (the star is read
+    // to find whether there are any).
+    std::span<const VertexId> neighbors;
+    if (chunk == nullptr) {
+      neighbors = stars_.neighbors(v);
+      if (neighbors.empty() || neighbors.back() < v) return;
+    }
     // The star's cells and facet flags, read once (independent loads, see
     // classify_facets) into a local copy that both passes use.
     out.star.resize(cells.size());
@@ -249,7 +254,6 @@ class Classifier {
       local.above = static_cast<std::uint8_t>(above);
       local.disjoint = cell_disjoint_[cells[k]];
     }
-    std::span<const VertexId> neighbors;
     if (chunk != nullptr) {
       const std::size_t n = rt_.number_of_points();
       if (out.seen.size() < n) out.seen.assign(n, 0);
@@ -268,8 +272,6 @@ class Classifier {
       chunk->lists.insert(chunk->lists.end(), out.found.begin(), out.found.end());
       chunk->counts.push_back(static_cast<std::uint32_t>(out.found.size()));
       neighbors = out.found;
-    } else {
-      neighbors = stars_.neighbors(v);
     }
     // Slots: the neighbours u > v, in order; slot_of[u] is a per-worker scratch map.
     const auto first = std::upper_bound(neighbors.begin(), neighbors.end(), v);
@@ -278,7 +280,7 @@ class Classifier {
     std::vector<std::uint32_t>& slot_of = out.slot_of;
     if (slot_of.size() < rt_.number_of_points()) slot_of.assign(rt_.number_of_points(), 0);
     for (std::size_t k = 0; k < slots; ++k) slot_of[first[k]] = static_cast<std::uint32_t>(k);
-    // The neighbours' points (edge ends and ring vertices) are needed by the tests below;
+    // The higher neighbours' points (the edges' other ends) are needed by the tests below;
     // they are scattered in memory.
     for (auto it = first; it != neighbors.end(); ++it) rt_.prefetch_point(*it);
     out.edge_in_k.assign(slots, 0);

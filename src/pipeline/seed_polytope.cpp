@@ -342,8 +342,9 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
 
   Report::Stage stars_stage(rep, "vertex stars");
   // The neighbour lists are left to the dual complex's edge pass, which reads every star.
-  triangulation::VertexStars stars(rt, options.threads, std::size_t{4} << 20,
-                                   triangulation::VertexStars::Neighbors::deferred);
+  using triangulation::VertexStars;
+  VertexStars stars(rt, options.threads, VertexStars::kCellsPerThread,
+                    VertexStars::Neighbors::deferred);
   stars_stage.finish();
 
   Report::Stage dual_stage(rep, "dual complex");

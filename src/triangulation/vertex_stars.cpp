@@ -53,7 +53,7 @@ void VertexStars::set_neighbors(const RegularTriangulation3& rt, std::vector<std
   neighbor_offsets_ = std::move(offsets);
   neighbors_ = std::move(lists);
   if constexpr (check_level() >= 2) {
-    VertexStars built(rt, 1, std::size_t{4} << 20, Neighbors::deferred);
+    VertexStars built(rt, 1, kCellsPerThread, Neighbors::deferred);
     built.build_neighbors(rt, 1);
     RSTRUCT_ASSERT_MSG(built.neighbor_offsets_ == neighbor_offsets_ && built.neighbors_ == neighbors_,
                        "VertexStars::set_neighbors: the lists are not the stars' neighbours");

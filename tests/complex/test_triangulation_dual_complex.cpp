@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <utility>
 #include <vector>
 
 #include "rstruct/complex/dual_complex.hpp"
@@ -29,12 +30,13 @@ void check_same(const std::vector<Point3>& centres, const std::vector<double>& w
   const DualComplex reference = dual_complex(rt);
   const SimplicialComplex expected = reference.complex();
   const VertexStars built(rt, 1);
-  for (const unsigned threads : {1u, 3u}) {
-    // Neighbour lists built by the stars, or deferred to the edge pass (which must then
-    // install the same lists).
-    const auto neighbors = threads == 1 ? VertexStars::Neighbors::build
-                                        : VertexStars::Neighbors::deferred;
-    VertexStars stars(rt, threads, std::size_t{4} << 20, neighbors);
+  // Neighbour lists built by the stars, or deferred to the edge pass (which must then
+  // install the same lists), each with one and with several threads.
+  for (const auto& [threads, neighbors] :
+       {std::pair{1u, VertexStars::Neighbors::build}, std::pair{3u, VertexStars::Neighbors::build},
+        std::pair{1u, VertexStars::Neighbors::deferred},
+        std::pair{3u, VertexStars::Neighbors::deferred}}) {
+    VertexStars stars(rt, threads, VertexStars::kCellsPerThread, neighbors);
     const TriangulationDualComplex k = classify_dual_complex(rt, stars, threads);
     RC_ASSERT(stars.has_neighbors());
     for (triangulation::VertexId v = 0; v < centres.size(); ++v) {

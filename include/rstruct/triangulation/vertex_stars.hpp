@@ -26,13 +26,15 @@ class VertexStars {
  public:
   /// Whether the constructor builds the neighbour lists or leaves them to set_neighbors.
   enum class Neighbors { build, deferred };
+  /// The default of the constructor's cells_per_thread (see vertex_stars.cpp).
+  static constexpr std::size_t kCellsPerThread = std::size_t{4} << 20;
 
   /// Stars and neighbour lists of every vertex of `rt` (`threads` 0: hardware concurrency).
   /// Input points that are not vertices (hidden, merged) get empty lists. The stars are
   /// filled by one thread per `cells_per_thread` cells at the most (each thread reads all
   /// cells; see vertex_stars.cpp); the result does not depend on it.
   explicit VertexStars(const RegularTriangulation3& rt, unsigned threads = 0,
-                       std::size_t cells_per_thread = std::size_t{4} << 20,
+                       std::size_t cells_per_thread = kCellsPerThread,
                        Neighbors neighbors = Neighbors::build);
 
   /// Whether the neighbour lists are there (built, or installed by set_neighbors).
