@@ -74,7 +74,8 @@ class DelaunayCommand : public Command {
     Report::Stage read_stage(context.report, "read");
     TriangleMesh mesh = io::read_mesh(input_, read_options);
     read_stage.finish();
-    std::vector<double> weights = weighted_ ? take_weights(mesh) : std::vector<double>{};
+    std::vector<double> weights =
+        weighted_ ? weights_from_properties(mesh, input_, "--weights") : std::vector<double>{};
     const std::size_t n = mesh.vertices.size();
 
     triangulation::TriangulationOptions options;
@@ -120,24 +121,6 @@ class DelaunayCommand : public Command {
   }
 
  private:
-  /// The weights from the `weight` or `radius` property (radius r gives weight r²).
-  std::vector<double> take_weights(const TriangleMesh& mesh) const {
-    if (const std::vector<double>* w = mesh.property("weight")) return *w;
-    if (const std::vector<double>* r = mesh.property("radius")) {
-      std::vector<double> w(r->size());
-      for (std::size_t i = 0; i < r->size(); ++i) {
-        if (!((*r)[i] >= 0)) {
-          throw InvalidInput(input_ + ": vertex " + std::to_string(i) +
-                             " has a negative or NaN radius");
-        }
-        w[i] = (*r)[i] * (*r)[i];
-      }
-      return w;
-    }
-    throw InvalidInput(input_ + ": --weights needs a `weight` or `radius` vertex property "
-                       "(PLY) or a 4th column (XYZ)");
-  }
-
   void write_node(const std::filesystem::path& path, const RegularTriangulation3& t) const {
     AtomicFile file(path);
     std::ostream& out = file.stream();

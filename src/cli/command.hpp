@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "rstruct/core/report.hpp"
+#include "rstruct/geometry/triangle_mesh.hpp"
 
 namespace rstruct::cli {
 
@@ -57,6 +58,13 @@ std::array<double, 3> parse_triple(const std::string& text, const std::string& o
 
 /// Requires a finite number within [lo, hi]. \throws InvalidInput naming the option.
 double require_range(double value, double lo, double hi, const std::string& option);
+
+/// The weights of a point set read as a mesh: its PLY vertex property `weight`, or
+/// `radius` (radius r gives weight r²), or an XYZ file's 4th column read as `weight`.
+/// \throws InvalidInput naming `input` if there is neither, or a radius is negative or NaN
+/// (`option` names what asked for the weights).
+std::vector<double> weights_from_properties(const TriangleMesh& mesh, const std::string& input,
+                                            const std::string& option);
 
 /// Upper end of --cover-iterations (a day's work and more on any machine).
 inline constexpr double kMaxCoverIterations = 1e12;

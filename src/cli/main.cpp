@@ -51,6 +51,24 @@ double require_range(double value, double lo, double hi, const std::string& opti
   return value;
 }
 
+std::vector<double> weights_from_properties(const TriangleMesh& mesh, const std::string& input,
+                                            const std::string& option) {
+  if (const std::vector<double>* w = mesh.property("weight")) return *w;
+  if (const std::vector<double>* r = mesh.property("radius")) {
+    std::vector<double> w(r->size());
+    for (std::size_t i = 0; i < r->size(); ++i) {
+      if (!((*r)[i] >= 0)) {
+        throw InvalidInput(input + ": vertex " + std::to_string(i) +
+                           " has a negative or NaN radius");
+      }
+      w[i] = (*r)[i] * (*r)[i];
+    }
+    return w;
+  }
+  throw InvalidInput(input + ": " + option + " needs a `weight` or `radius` vertex property "
+                     "(PLY) or a 4th column (XYZ)");
+}
+
 }  // namespace rstruct::cli
 
 int main(int argc, char** argv) {

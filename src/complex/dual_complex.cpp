@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "complex/ball_cells.hpp"
 #include "rstruct/complex/coface_index.hpp"
 #include "rstruct/complex/orthosphere_predicates.hpp"
 #include "rstruct/core/error.hpp"
@@ -9,16 +10,6 @@
 
 namespace rstruct::complex {
 namespace {
-
-/// The vertex of `coface` (sorted tuple) that is not in `face` (sorted, one shorter).
-template <std::size_t K>
-VertexId opposite_vertex(const std::array<VertexId, K + 1>& coface,
-                         const std::array<VertexId, K>& face) {
-  for (std::size_t i = 0; i < K; ++i) {
-    if (coface[i] != face[i]) return coface[i];
-  }
-  return coface[K];
-}
 
 class Classifier {
  public:
@@ -29,7 +20,8 @@ class Classifier {
 
   void run() {
     for (SimplexIndex t = 0; t < r_.size(3); ++t) {
-      in_k_[3][t] = orthosphere_power_sign(weighted(r_.tetrahedra()[t])) != Sign::positive;
+      in_k_[3][t] = orthosphere_power_sign(detail::weighted_simplex(points_, r_.tetrahedra()[t])) !=
+                    Sign::positive;
     }
     for (SimplexIndex f = 0; f < r_.size(2); ++f) {
       in_k_[2][f] = classify(2, f, r_.triangles()[f], r_.tetrahedra());
@@ -43,13 +35,6 @@ class Classifier {
   }
 
  private:
-  template <std::size_t K>
-  std::array<WeightedPoint, K> weighted(const std::array<VertexId, K>& s) const {
-    std::array<WeightedPoint, K> w;
-    for (std::size_t i = 0; i < K; ++i) w[i] = points_[s[i]];
-    return w;
-  }
-
   /// Membership of the simplex `s` of dimension d < 3 (index i), its cofaces classified.
   template <std::size_t K, class Cofaces>
   bool classify(int d, SimplexIndex i, const std::array<VertexId, K>& s,
@@ -58,11 +43,11 @@ class Classifier {
     for (const SimplexIndex c : cofaces) {
       if (in_k_[d + 1][c]) return true;  // V_c ⊂ V_s, and K is closed under faces
     }
-    const auto sigma = weighted(s);
+    const auto sigma = detail::weighted_simplex(points_, s);
     // No coface in K: the minimum of π over V_s is ≤ 0 only at z_s, if z_s ∈ V_s.
     if (orthosphere_power_sign(sigma) == Sign::positive) return false;
     for (const SimplexIndex c : cofaces) {
-      const VertexId p = opposite_vertex<K>(coface_list[c], s);
+      const VertexId p = detail::opposite_vertex<K>(coface_list[c], s);
       if (orthosphere_attachment_sign(sigma, points_[p]) == Sign::negative) return false;
     }
     return true;
@@ -113,15 +98,7 @@ std::array<std::size_t, 4> DualComplex::facet_class_counts() const {
 
 DualComplex dual_complex(std::span<const WeightedPoint> points,
                          std::span<const Tetrahedron> cells) {
-  for (std::size_t c = 0; c < cells.size(); ++c) {
-    for (const VertexId v : cells[c]) {
-      if (v >= points.size()) {
-        throw InvalidInput("dual_complex: cell #" + std::to_string(c) + " names point " +
-                           std::to_string(v) + " but there are " +
-                           std::to_string(points.size()) + " points");
-      }
-    }
-  }
+  detail::require_points_exist(cells, points.size(), "dual_complex");
   DualComplex k;
   k.triangulation = SimplicialComplex::closure_of(cells);
   Classifier(points, k).run();
@@ -130,15 +107,8 @@ DualComplex dual_complex(std::span<const WeightedPoint> points,
 }
 
 DualComplex dual_complex(const triangulation::RegularTriangulation3& triangulation) {
-  std::vector<WeightedPoint> points(triangulation.number_of_points());
-  for (std::size_t v = 0; v < points.size(); ++v) {
-    points[v] = triangulation.weighted_point(static_cast<triangulation::VertexId>(v));
-  }
-  std::vector<Tetrahedron> cells;
-  cells.reserve(triangulation.number_of_finite_cells());
-  triangulation.for_each_finite_cell(
-      [&](triangulation::CellId c) { cells.push_back(triangulation.vertices(c)); });
-  return dual_complex(points, cells);
+  const detail::BallCells input = detail::ball_cells(triangulation);
+  return dual_complex(input.points, input.cells);
 }
 
 }  // namespace rstruct::complex

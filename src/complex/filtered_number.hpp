@@ -63,6 +63,14 @@ struct FilteredNumber {
     return {s, std::fabs(a) + std::fabs(b), 1, false};
   }
 
+  /// A certified bound on |v − exact value| (the bound certified_sign compares with), or
+  /// +infinity when the model does not hold (underflow, non-finite values).
+  double error_bound() const {
+    if (unsafe || !std::isfinite(v) || !std::isfinite(m)) return HUGE_VAL;
+    const double bound = m * (static_cast<double>(d) * 0x1p-52);
+    return std::isfinite(bound) ? bound : HUGE_VAL;
+  }
+
   /// −1, 0 or +1 if the sign of the exact value is certified, else 2.
   int certified_sign() const {
     if (unsafe || !std::isfinite(v) || !std::isfinite(m)) return 2;

@@ -2,14 +2,18 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <type_traits>
 
 #include "complex/filtered_number.hpp"
 #include "complex/rounded_leaf_number.hpp"
+#include "rstruct/core/assert.hpp"
 #include "rstruct/core/error.hpp"
 
 namespace rstruct::complex {
@@ -254,6 +258,146 @@ Sign orthosphere_power_sign(std::span<const WeightedPoint> sigma) {
   }
   ++t_counts.exact;
   return orthosphere_power_sign_exact(sigma);
+}
+
+namespace {
+
+/// 4D of the header: 4|u₁|², 4|n|² or 4 det².
+FilteredNumber orthosphere_denominator(const OrthoSystem<FilteredNumber>& s) {
+  const FilteredNumber four(4.0);
+  if (s.dim() == 1) return four * s.uu;
+  if (s.dim() == 2) return four * s.nn;
+  const FilteredNumber det = s.degeneracy();
+  return four * det * det;
+}
+
+/// Whether the filtered x is within a relative 2⁻³⁰ of its exact value and not zero (a
+/// zero value needs the exact stage to tell 0 from tiny). (2⁻⁴⁶ sent about a quarter of
+/// the simplices of a surface-ball triangulation to the exact stage: flat cells.)
+bool accurate(const FilteredNumber& x) {
+  const double e = x.error_bound();
+  return x.v != 0 && e <= std::fabs(x.v) * 0x1p-30;
+}
+
+/// An input double as m·2^e with m an integer (|m| < 2⁵³).
+struct Dyadic {
+  double mantissa;
+  int exponent;
+};
+Dyadic dyadic(double x) {
+  int e = 0;
+  const double f = std::frexp(x, &e);  // x = f·2^e, 0.5 ≤ |f| < 1 (or x = 0)
+  return {std::ldexp(f, 53), e - 53};
+}
+
+/// m·2^shift as an integer. \pre shift ≥ 0 unless m = 0.
+mpz_class scaled(const Dyadic& d, int shift) {
+  if (d.mantissa == 0) return 0;
+  RSTRUCT_ASSERT(shift >= 0);
+  mpz_class z(d.mantissa);  // exact: an integer below 2⁵³
+  mpz_mul_2exp(z.get_mpz_t(), z.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
+  return z;
+}
+
+/// The exact π_σ(z_σ), rounded toward zero to a double, from integers: every coordinate
+/// times 2^E and every weight times 2^2E (E makes them all integers), so that the header's
+/// polynomials are evaluated without fractions (mpq_class would take a gcd after every
+/// operation), and the quotient is scaled back by 2^−2E once.
+double exact_power_value(std::span<const WeightedPoint> sigma) {
+  const std::size_t k = sigma.size() - 1;
+  std::array<std::array<Dyadic, 3>, 4> c{};
+  std::array<Dyadic, 4> w{};
+  int scale = std::numeric_limits<int>::min();
+  for (std::size_t i = 0; i <= k; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      c[i][j] = dyadic(sigma[i].c[j]);
+      if (c[i][j].mantissa != 0) scale = std::max(scale, -c[i][j].exponent);
+    }
+    w[i] = dyadic(sigma[i].w);
+    if (w[i].mantissa != 0) scale = std::max(scale, (1 - w[i].exponent) / 2);
+  }
+  if (scale == std::numeric_limits<int>::min()) scale = 0;  // every input is zero
+  using V = std::array<mpz_class, 3>;
+  const auto dot = [](const V& x, const V& y) { return mpz_class(x[0] * y[0] + x[1] * y[1] + x[2] * y[2]); };
+  const auto cross = [](const V& x, const V& y) {
+    return V{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+  };
+  std::array<V, 4> p;
+  std::array<mpz_class, 4> weight;
+  for (std::size_t i = 0; i <= k; ++i) {
+    for (int j = 0; j < 3; ++j) p[i][j] = scaled(c[i][j], c[i][j].exponent + scale);
+    weight[i] = scaled(w[i], w[i].exponent + 2 * scale);
+  }
+  std::array<V, 3> u;
+  std::array<mpz_class, 3> b;
+  for (std::size_t i = 0; i < k; ++i) {
+    for (int j = 0; j < 3; ++j) u[i][j] = p[i + 1][j] - p[0][j];
+    b[i] = dot(u[i], u[i]) - (weight[i + 1] - weight[0]);
+  }
+  mpz_class num;
+  mpz_class den;
+  if (k == 1) {
+    den = dot(u[0], u[0]);
+    num = b[0] * b[0] - 4 * den * weight[0];
+  } else if (k == 2) {
+    const V n = cross(u[0], u[1]);
+    den = dot(n, n);
+    V a;
+    for (int j = 0; j < 3; ++j) a[j] = b[0] * u[1][j] - b[1] * u[0][j];
+    num = dot(a, a) - 4 * den * weight[0];
+  } else {
+    const V c0 = cross(u[1], u[2]);
+    const V c1 = cross(u[2], u[0]);
+    const V c2 = cross(u[0], u[1]);
+    V v;
+    for (int j = 0; j < 3; ++j) v[j] = b[0] * c0[j] + b[1] * c1[j] + b[2] * c2[j];
+    const mpz_class det = dot(u[0], c0);
+    den = det * det;
+    num = dot(v, v) - 4 * den * weight[0];
+  }
+  if (sgn(den) == 0) {
+    throw InvalidInput("orthosphere predicate: the points of the simplex are affinely dependent");
+  }
+  den *= 4;
+  const int sign = sgn(num);
+  if (sign == 0) return 0.0;
+  // |num| / den to at least 64 bits: shift num left, divide, truncate.
+  mpz_class q = abs(num);
+  const auto bits = [](const mpz_class& x) {
+    return static_cast<long>(mpz_sizeinbase(x.get_mpz_t(), 2));
+  };
+  const long shift = std::max(0L, 64 + bits(den) - bits(q));
+  mpz_mul_2exp(q.get_mpz_t(), q.get_mpz_t(), static_cast<mp_bitcnt_t>(shift));
+  mpz_tdiv_q(q.get_mpz_t(), q.get_mpz_t(), den.get_mpz_t());
+  long exponent = 0;
+  const double mantissa = mpz_get_d_2exp(&exponent, q.get_mpz_t());  // truncated, [0.5, 1)
+  const long e2 = exponent - shift - 2L * scale;
+  const double magnitude =
+      std::ldexp(mantissa, static_cast<int>(std::clamp(e2, -2000L, 2000L)));
+  if (magnitude == 0) return sign * std::numeric_limits<double>::denorm_min();
+  return sign * magnitude;
+}
+
+}  // namespace
+
+double orthosphere_power_value(std::span<const WeightedPoint> sigma) {
+  check_size(sigma, 4);
+  if (sigma.size() == 1) return -sigma[0].w;
+  // Filtered: numerator and denominator each within a relative 2⁻³⁰, so their rounded
+  // quotient is within (1 + 2⁻³⁰)² / (1 − 2⁻³⁰) · (1 + 2⁻⁵³) − 1 < 2⁻²⁸ of the exact one;
+  // its sign is then certified too.
+  const OrthoSystem<FilteredNumber> s(sigma);
+  const FilteredNumber num = s.power();
+  const FilteredNumber den = orthosphere_denominator(s);
+  if (accurate(num) && accurate(den)) {
+    const double q = num.v / den.v;
+    if (std::isfinite(q) && std::fabs(q) >= 0x1p-1000) {  // normal: relative rounding
+      ++t_counts.filtered;
+      return q;
+    }
+  }
+  ++t_counts.exact;
+  return exact_power_value(sigma);
 }
 
 Sign orthosphere_attachment_sign(std::span<const WeightedPoint> sigma, const WeightedPoint& p) {

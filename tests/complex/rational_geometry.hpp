@@ -5,7 +5,9 @@
 // enumerating the faces of the dual power face (shares no formula with the code checked).
 
 #include <gmpxx.h>
+#include <rapidcheck.h>
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <vector>
@@ -112,34 +114,65 @@ inline std::vector<Tetrahedron> brute_force_regular_cells(const std::vector<QPoi
   return cells;
 }
 
-/// Brute-force test of σ ∈ K: is the minimum of π_σ over V_σ = {x : π_σ(x) ≤ π_q(x) ∀q}
-/// at most 0? That minimum is attained at the minimiser of π_σ over the affine hull of
-/// some face of V_σ, cut out by a set A of other points with σ ∪ A affinely independent:
-/// the point z_{σ ∪ A}. So σ ∈ K iff some z_{σ ∪ A} (|A| ≤ 3 − dim σ) has π_σ ≤ 0 and lies
-/// in V_σ (checked against every other point).
-inline bool brute_force_in_k(const std::vector<QPoint>& pts, const std::vector<VertexId>& sigma) {
+/// A ball set with its exact copy and its regular triangulation's finite cells.
+struct BallSet {
+  std::vector<WeightedPoint> points;
+  std::vector<QPoint> exact;
+  std::vector<Tetrahedron> cells;
+};
+
+/// Regular triangulation by brute force; false if the set is degenerate or flat.
+inline bool triangulate(BallSet& set) {
+  set.exact.clear();
+  for (const auto& p : set.points) set.exact.push_back(to_q(p));
+  bool degenerate = false;
+  set.cells = brute_force_regular_cells(set.exact, degenerate);
+  return !degenerate && !set.cells.empty();
+}
+
+/// A RapidCheck generator's draw: 5 to 8 balls with centres in [−s, s]³ and radii in
+/// [lo, 1000) / 800 · s, for a random s in 1..4: small lo gives sparse dual complexes,
+/// large lo many tetrahedra in K. Not triangulated yet.
+inline BallSet random_ball_set(int lo) {
+  const int n = *rc::gen::inRange(5, 9);
+  const double spread = *rc::gen::inRange(1, 5);
+  BallSet set;
+  for (int i = 0; i < n; ++i) {
+    const auto coord = [&] { return *rc::gen::inRange(-1000000, 1000000) * spread / 1e6; };
+    const double r = *rc::gen::inRange(lo, 1000) / 800.0 * spread;
+    set.points.push_back({{coord(), coord(), coord()}, r * r});
+  }
+  return set;
+}
+
+/// The minimisers of π_σ over V_σ = {x : π_σ(x) ≤ π_q(x) ∀q} are among the points z_{σ ∪ A}
+/// (the minimiser of π_σ over the affine hull of a face of V_σ, cut out by a set A of other
+/// points with σ ∪ A affinely independent, |A| ≤ 3 − dim σ). Calls visit(π_σ(z)) for every
+/// such z that lies in V_σ (checked against every other point) until visit returns true;
+/// returns whether it did.
+template <class Visit>
+bool for_each_dual_face_minimum(const std::vector<QPoint>& pts, const std::vector<VertexId>& sigma,
+                                Visit&& visit) {
   std::vector<VertexId> others;
   for (VertexId q = 0; q < pts.size(); ++q) {
     if (std::find(sigma.begin(), sigma.end(), q) == sigma.end()) others.push_back(q);
   }
   const std::size_t max_extra = 4 - sigma.size();
   std::vector<VertexId> chosen;
-  const auto visit = [&](const auto& self, std::size_t start) -> bool {
+  const auto search = [&](const auto& self, std::size_t start) -> bool {
     std::vector<QPoint> s;
     for (const VertexId v : sigma) s.push_back(pts[v]);
     for (const VertexId v : chosen) s.push_back(pts[v]);
     if (const auto z = orthocenter(s)) {
       const Q value = power(*z, pts[sigma[0]]);
-      if (sgn(value) <= 0) {
-        bool feasible = true;
-        for (const VertexId q : others) {
-          if (power(*z, pts[q]) < value) {
-            feasible = false;
-            break;
-          }
+      bool feasible = true;
+      for (const VertexId q : others) {
+        if (power(*z, pts[q]) < value) {
+          feasible = false;
+          break;
         }
-        if (feasible) return true;
       }
+      if (feasible && visit(value)) return true;
     }
     if (chosen.size() == max_extra) return false;
     for (std::size_t i = start; i < others.size(); ++i) {
@@ -150,7 +183,24 @@ inline bool brute_force_in_k(const std::vector<QPoint>& pts, const std::vector<V
     }
     return false;
   };
-  return visit(visit, 0);
+  return search(search, 0);
+}
+
+/// Brute-force test of σ ∈ K: is the minimum of π_σ over V_σ at most 0?
+inline bool brute_force_in_k(const std::vector<QPoint>& pts, const std::vector<VertexId>& sigma) {
+  return for_each_dual_face_minimum(pts, sigma, [](const Q& value) { return sgn(value) <= 0; });
+}
+
+/// Brute-force α(σ), the minimum of π_σ over V_σ (nullopt if V_σ is empty: σ is not a
+/// simplex of the regular triangulation).
+inline std::optional<Q> brute_force_alpha(const std::vector<QPoint>& pts,
+                                          const std::vector<VertexId>& sigma) {
+  std::optional<Q> least;
+  for_each_dual_face_minimum(pts, sigma, [&](const Q& value) {
+    if (!least || value < *least) least = value;
+    return false;
+  });
+  return least;
 }
 
 }  // namespace rstruct::complex::testing

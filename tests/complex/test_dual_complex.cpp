@@ -13,23 +13,10 @@
 
 using namespace rstruct;
 using namespace rstruct::complex;
+using testing::BallSet;
+using testing::triangulate;
 
 namespace {
-
-struct BallSet {
-  std::vector<WeightedPoint> points;
-  std::vector<testing::QPoint> exact;
-  std::vector<Tetrahedron> cells;
-};
-
-/// Regular triangulation by brute force; false if the set is degenerate or flat.
-bool triangulate(BallSet& set) {
-  set.exact.clear();
-  for (const auto& p : set.points) set.exact.push_back(testing::to_q(p));
-  bool degenerate = false;
-  set.cells = testing::brute_force_regular_cells(set.exact, degenerate);
-  return !degenerate && !set.cells.empty();
-}
 
 /// Every simplex of R classified as the brute force says; facet classes consistent.
 void check_against_brute_force(const BallSet& set, const DualComplex& k) {
@@ -120,18 +107,9 @@ TEST_CASE("cells naming missing points are rejected") {
 }
 
 TEST_CASE("dual complex agrees with the brute-force definition on random ball sets") {
-  // Radii in [lo, 1.25) × spread: small ones give sparse complexes, large ones many
-  // tetrahedra in K.
   for (const int lo : {1, 500}) {
     rc::prop(lo == 1 ? "random balls in general position" : "large overlapping balls", [lo] {
-      const int n = *rc::gen::inRange(5, 9);
-      const double spread = *rc::gen::inRange(1, 5);
-      BallSet set;
-      for (int i = 0; i < n; ++i) {
-        const auto coord = [&] { return *rc::gen::inRange(-1000000, 1000000) * spread / 1e6; };
-        const double r = *rc::gen::inRange(lo, 1000) / 800.0 * spread;
-        set.points.push_back({{coord(), coord(), coord()}, r * r});
-      }
+      BallSet set = testing::random_ball_set(lo);
       RC_PRE(triangulate(set));
       const auto k = dual_complex(set.points, set.cells);
       check_against_brute_force(set, k);

@@ -53,6 +53,18 @@ Sign orthosphere_attachment_sign(std::span<const WeightedPoint> sigma, const Wei
 bool orthosphere_is_unattached_in_union(std::span<const WeightedPoint> sigma,
                                         std::span<const WeightedPoint> opposite);
 
+/// π_σ(z_σ) itself, a floating-point construction (for the α filtration,
+/// alpha_filtration.hpp): its sign is the exact sign of orthosphere_power_sign (0 exactly
+/// when the exact value is 0), and where the exact value's magnitude lies in
+/// [2⁻¹⁰⁰⁰, 2¹⁰²⁴) the result is within a relative 2⁻²⁸ of it. The filtered evaluation of
+/// numerator and denominator is used when its certified error bound is within 2⁻³⁰ of
+/// each, else the exact value from integer arithmetic, truncated to a double (a non-zero
+/// value too small for a double becomes the smallest double of its sign; one too large,
+/// ±infinity). For k = 0 it is −w₀.
+/// \pre 1 ≤ sigma.size() ≤ 4, points affinely independent.
+/// \throws InvalidInput if the points are affinely dependent.
+double orthosphere_power_value(std::span<const WeightedPoint> sigma);
+
 /// The same signs from exact rational arithmetic only (no filter): the oracle of the
 /// filter tests.
 Sign orthosphere_power_sign_exact(std::span<const WeightedPoint> sigma);
