@@ -50,7 +50,9 @@ class AlphaCommand : public Command {
         ->required();
     app.add_option("--format", format_,
                    "Input format (xyzr, ply, off, obj, xyz) instead of the input's extension");
-    app.add_option("--threads", threads_, "Triangulation threads (0: all cores)")
+    app.add_option("--threads", threads_,
+                   "Threads of the triangulation and the filtration (0: all cores; the output "
+                   "does not depend on the count)")
         ->capture_default_str();
   }
 
@@ -70,7 +72,7 @@ class AlphaCommand : public Command {
 
     Report::Stage filtration_stage(context.report, "alpha filtration");
     complex::reset_orthosphere_predicate_counters();
-    const AlphaFiltration f = complex::alpha_filtration(rt);
+    const AlphaFiltration f = complex::alpha_filtration(rt, threads_);
     const complex::OrthospherePredicateCounters evaluations =
         complex::orthosphere_predicate_counters();
     filtration_stage.finish();

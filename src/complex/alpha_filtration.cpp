@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "complex/ball_cells.hpp"
 #include "rstruct/complex/coface_index.hpp"
 #include "rstruct/complex/orthosphere_predicates.hpp"
+#include "rstruct/core/parallel.hpp"
 
 // Why α(σ) ≤ 0 iff σ ∈ K exactly, although the values are rounded: every value
 // orthosphere_power_value returns has the sign of the exact π_σ(z_σ). By induction from the
@@ -23,18 +25,30 @@ class Filtration {
   Filtration(std::span<const WeightedPoint> points, AlphaFiltration& out)
       : points_(points), r_(out.triangulation), cof_(r_), out_(out) {
     for (int d = 0; d < 4; ++d) out_.alpha[d].assign(r_.size(d), 0.0);
-    for (int d = 0; d < 3; ++d) out_.attached[d].assign(r_.size(d), false);
+    for (int d = 0; d < 3; ++d) attached_[d].assign(r_.size(d), 0);
   }
 
-  void run() {
-    for (SimplexIndex t = 0; t < r_.size(3); ++t) {
+  /// Top-down, each dimension on `threads` threads: a simplex reads only the values of its
+  /// cofacets, all of the dimension before.
+  void run(unsigned threads) {
+    const auto each = [&](int d, auto&& fn) {
+      parallel_chunks(r_.size(d), threads, kChunk,
+                      [&](std::size_t begin, std::size_t end, unsigned) {
+                        for (std::size_t i = begin; i < end; ++i) fn(static_cast<SimplexIndex>(i));
+                      });
+    };
+    each(3, [&](SimplexIndex t) {
       out_.alpha[3][t] =
           orthosphere_power_value(detail::weighted_simplex(points_, r_.tetrahedra()[t]));
-    }
-    for (SimplexIndex f = 0; f < r_.size(2); ++f) value(2, f, r_.triangles()[f], r_.tetrahedra());
-    for (SimplexIndex e = 0; e < r_.size(1); ++e) value(1, e, r_.edges()[e], r_.triangles());
-    for (SimplexIndex v = 0; v < r_.size(0); ++v) {
+    });
+    each(2, [&](SimplexIndex f) { value(2, f, r_.triangles()[f], r_.tetrahedra()); });
+    each(1, [&](SimplexIndex e) { value(1, e, r_.edges()[e], r_.triangles()); });
+    each(0, [&](SimplexIndex v) {
       value(0, v, std::array<VertexId, 1>{r_.vertices()[v]}, r_.edges());
+    });
+    // std::vector<bool> packs its flags into shared words: the threads wrote bytes.
+    for (int d = 0; d < 3; ++d) {
+      out_.attached[d].assign(attached_[d].begin(), attached_[d].end());
     }
   }
 
@@ -42,7 +56,7 @@ class Filtration {
   /// α of the simplex `s` of dimension d < 3 (index i), its cofacets done.
   template <std::size_t K, class Cofaces>
   void value(int d, SimplexIndex i, const std::array<VertexId, K>& s,
-             const Cofaces& coface_list) const {
+             const Cofaces& coface_list) {
     const auto cofaces = cof_.cofaces(d, i);
     double least = HUGE_VAL;
     for (const SimplexIndex c : cofaces) least = std::min(least, out_.alpha[d + 1][c]);
@@ -55,14 +69,18 @@ class Filtration {
         break;
       }
     }
-    out_.attached[d][i] = attached;
+    attached_[d][i] = attached ? 1 : 0;
     out_.alpha[d][i] = attached ? least : std::min(least, orthosphere_power_value(sigma));
   }
+
+  /// Simplices per parallel chunk.
+  static constexpr std::size_t kChunk = 1 << 12;
 
   std::span<const WeightedPoint> points_;
   const SimplicialComplex& r_;
   CofaceIndex cof_;
   AlphaFiltration& out_;
+  std::array<std::vector<std::uint8_t>, 3> attached_;
 };
 
 }  // namespace
@@ -101,17 +119,18 @@ std::vector<std::pair<int, SimplexIndex>> AlphaFiltration::order() const {
 }
 
 AlphaFiltration alpha_filtration(std::span<const WeightedPoint> points,
-                                 std::span<const Tetrahedron> cells) {
+                                 std::span<const Tetrahedron> cells, unsigned threads) {
   detail::require_points_exist(cells, points.size(), "alpha_filtration");
   AlphaFiltration f;
   f.triangulation = SimplicialComplex::closure_of(cells);
-  Filtration(points, f).run();
+  Filtration(points, f).run(threads);
   return f;
 }
 
-AlphaFiltration alpha_filtration(const triangulation::RegularTriangulation3& triangulation) {
+AlphaFiltration alpha_filtration(const triangulation::RegularTriangulation3& triangulation,
+                                 unsigned threads) {
   const detail::BallCells input = detail::ball_cells(triangulation);
-  return alpha_filtration(input.points, input.cells);
+  return alpha_filtration(input.points, input.cells, threads);
 }
 
 }  // namespace rstruct::complex

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "complex/rational_geometry.hpp"
@@ -221,6 +222,36 @@ TEST_CASE("α filtration of a ring of balls: points, a loop, then a disc") {
   CHECK(betti_numbers(complex_at(0.0)) == BettiNumbers{{1, 1, 0, 0}});
   CHECK(betti_numbers(complex_at(1e6)) == BettiNumbers{{1, 0, 0, 0}});
   CHECK(f.sublevel(0.0) == dual_complex(rt).in_k);
+}
+
+TEST_CASE("α filtration: the same values and flags on any number of threads") {
+  // 3,000 random balls (about 10^5 simplices, many chunks per dimension), radii such that
+  // K is neither empty nor everything.
+  std::mt19937_64 rng(26);
+  std::uniform_real_distribution<double> coord(-1.0, 1.0);
+  std::uniform_real_distribution<double> radius(0.01, 0.08);
+  std::vector<Point3> centres;
+  std::vector<double> weights;
+  for (int i = 0; i < 3000; ++i) {
+    centres.push_back({coord(rng), coord(rng), coord(rng)});
+    const double r = radius(rng);
+    weights.push_back(r * r);
+  }
+  const triangulation::RegularTriangulation3 rt(centres, weights);
+  const AlphaFiltration one = alpha_filtration(rt, 1);
+  REQUIRE(one.triangulation.total_size() > 50000);
+  for (const unsigned threads : {2u, 3u}) {
+    const AlphaFiltration many = alpha_filtration(rt, threads);
+    CHECK(many.alpha == one.alpha);  // bit for bit
+    CHECK(many.attached == one.attached);
+  }
+  const auto k = one.sublevel(0.0);
+  const auto counts = dual_complex(rt).counts();
+  for (int d = 0; d < 4; ++d) {
+    CHECK(static_cast<std::size_t>(std::count(k[d].begin(), k[d].end(), true)) == counts[d]);
+  }
+  CHECK(counts[1] > 0);
+  CHECK(counts[1] < one.triangulation.size(1));
 }
 
 TEST_CASE("α filtration: cells naming missing points are rejected") {

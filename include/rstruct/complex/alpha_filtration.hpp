@@ -54,14 +54,16 @@ struct AlphaFiltration {
 };
 
 /// The α filtration of weighted points given the finite cells of their regular
-/// triangulation (as dual_complex(points, cells)).
+/// triangulation (as dual_complex(points, cells)), each dimension's simplices on `threads`
+/// threads (0: all cores; the result does not depend on the count).
 /// \pre `cells` are the finite cells of the regular triangulation of `points`.
 /// \throws InvalidInput if a cell names a point out of range or repeats a vertex, or if a
 ///   simplex is affinely degenerate (which a regular triangulation never has).
 AlphaFiltration alpha_filtration(std::span<const WeightedPoint> points,
-                                 std::span<const Tetrahedron> cells);
+                                 std::span<const Tetrahedron> cells, unsigned threads = 0);
 
 /// The α filtration of the weighted points of a regular triangulation.
-AlphaFiltration alpha_filtration(const triangulation::RegularTriangulation3& triangulation);
+AlphaFiltration alpha_filtration(const triangulation::RegularTriangulation3& triangulation,
+                                 unsigned threads = 0);
 
 }  // namespace rstruct::complex
