@@ -129,6 +129,26 @@ struct OrthoSystem {
                       RoundedLeafNumber::is_safe_leaf(dw.v);
       }
     }
+    derive_shared();
+  }
+
+  /// The same system from exact leaves in N (leaves[i] = x, y, z, w of σ's point i, all in
+  /// one scale): the exact integer stage of orthosphere_power_value. Serves degeneracy()
+  /// and power() only (attachment() reads the doubles of σ's first point).
+  OrthoSystem(std::span<const WeightedPoint> sigma, const std::array<std::array<N, 4>, 4>& leaves)
+      : k(static_cast<int>(sigma.size()) - 1), first(sigma[0]) {
+    static_assert(KC < 0);
+    for (int j = 0; j < 3; ++j) origin[j] = leaves[0][j];
+    w0 = leaves[0][3];
+    for (int i = 0; i < dim(); ++i) {
+      for (int j = 0; j < 3; ++j) u[i][j] = leaves[i + 1][j] - leaves[0][j];
+      b[i] = dot(u[i], u[i]) - (leaves[i + 1][3] - leaves[0][3]);
+    }
+    derive_shared();
+  }
+
+  /// uu, n, nn, a and axn from u and b.
+  RSTRUCT_COMPLEX_INLINE void derive_shared() {
     if (dim() == 1) uu = dot(u[0], u[0]);
     if (dim() == 2) {
       n = cross(u[0], u[1]);
@@ -262,13 +282,13 @@ Sign orthosphere_power_sign(std::span<const WeightedPoint> sigma) {
 
 namespace {
 
-/// 4D of the header: 4|u₁|², 4|n|² or 4 det².
-FilteredNumber orthosphere_denominator(const OrthoSystem<FilteredNumber>& s) {
-  const FilteredNumber four(4.0);
-  if (s.dim() == 1) return four * s.uu;
-  if (s.dim() == 2) return four * s.nn;
-  const FilteredNumber det = s.degeneracy();
-  return four * det * det;
+/// 4D of the header: 4|u₁|², 4|n|² or 4 det², in number type N.
+template <class N>
+N orthosphere_denominator(const OrthoSystem<N>& s) {
+  if (s.dim() == 1) return N(4.0) * s.uu;
+  if (s.dim() == 2) return N(4.0) * s.nn;
+  const N det = s.degeneracy();
+  return N(4.0) * det * det;
 }
 
 /// Whether the filtered x is within a relative 2⁻³⁰ of its exact value and not zero (a
@@ -301,64 +321,32 @@ mpz_class scaled(const Dyadic& d, int shift) {
 
 /// The exact π_σ(z_σ), rounded toward zero to a double, from integers: every coordinate
 /// times 2^E and every weight times 2^2E (E makes them all integers), so that the header's
-/// polynomials are evaluated without fractions (mpq_class would take a gcd after every
-/// operation), and the quotient is scaled back by 2^−2E once.
+/// polynomials (OrthoSystem<mpz_class>) are evaluated without fractions (mpq_class would
+/// take a gcd after every operation), and the quotient is scaled back by 2^−2E once.
 double exact_power_value(std::span<const WeightedPoint> sigma) {
-  const std::size_t k = sigma.size() - 1;
-  std::array<std::array<Dyadic, 3>, 4> c{};
-  std::array<Dyadic, 4> w{};
+  std::array<std::array<Dyadic, 4>, 4> d{};  // x, y, z, w of each point
   int scale = std::numeric_limits<int>::min();
-  for (std::size_t i = 0; i <= k; ++i) {
+  for (std::size_t i = 0; i < sigma.size(); ++i) {
     for (int j = 0; j < 3; ++j) {
-      c[i][j] = dyadic(sigma[i].c[j]);
-      if (c[i][j].mantissa != 0) scale = std::max(scale, -c[i][j].exponent);
+      d[i][j] = dyadic(sigma[i].c[j]);
+      if (d[i][j].mantissa != 0) scale = std::max(scale, -d[i][j].exponent);
     }
-    w[i] = dyadic(sigma[i].w);
-    if (w[i].mantissa != 0) scale = std::max(scale, (1 - w[i].exponent) / 2);
+    d[i][3] = dyadic(sigma[i].w);
+    if (d[i][3].mantissa != 0) scale = std::max(scale, (1 - d[i][3].exponent) / 2);
   }
   if (scale == std::numeric_limits<int>::min()) scale = 0;  // every input is zero
-  using V = std::array<mpz_class, 3>;
-  const auto dot = [](const V& x, const V& y) { return mpz_class(x[0] * y[0] + x[1] * y[1] + x[2] * y[2]); };
-  const auto cross = [](const V& x, const V& y) {
-    return V{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
-  };
-  std::array<V, 4> p;
-  std::array<mpz_class, 4> weight;
-  for (std::size_t i = 0; i <= k; ++i) {
-    for (int j = 0; j < 3; ++j) p[i][j] = scaled(c[i][j], c[i][j].exponent + scale);
-    weight[i] = scaled(w[i], w[i].exponent + 2 * scale);
+  std::array<std::array<mpz_class, 4>, 4> leaves;
+  for (std::size_t i = 0; i < sigma.size(); ++i) {
+    for (int j = 0; j < 4; ++j) {
+      leaves[i][j] = scaled(d[i][j], d[i][j].exponent + (j < 3 ? scale : 2 * scale));
+    }
   }
-  std::array<V, 3> u;
-  std::array<mpz_class, 3> b;
-  for (std::size_t i = 0; i < k; ++i) {
-    for (int j = 0; j < 3; ++j) u[i][j] = p[i + 1][j] - p[0][j];
-    b[i] = dot(u[i], u[i]) - (weight[i + 1] - weight[0]);
-  }
-  mpz_class num;
-  mpz_class den;
-  if (k == 1) {
-    den = dot(u[0], u[0]);
-    num = b[0] * b[0] - 4 * den * weight[0];
-  } else if (k == 2) {
-    const V n = cross(u[0], u[1]);
-    den = dot(n, n);
-    V a;
-    for (int j = 0; j < 3; ++j) a[j] = b[0] * u[1][j] - b[1] * u[0][j];
-    num = dot(a, a) - 4 * den * weight[0];
-  } else {
-    const V c0 = cross(u[1], u[2]);
-    const V c1 = cross(u[2], u[0]);
-    const V c2 = cross(u[0], u[1]);
-    V v;
-    for (int j = 0; j < 3; ++j) v[j] = b[0] * c0[j] + b[1] * c1[j] + b[2] * c2[j];
-    const mpz_class det = dot(u[0], c0);
-    den = det * det;
-    num = dot(v, v) - 4 * den * weight[0];
-  }
+  const OrthoSystem<mpz_class> s(sigma, leaves);
+  const mpz_class den = orthosphere_denominator(s);
   if (sgn(den) == 0) {
     throw InvalidInput("orthosphere predicate: the points of the simplex are affinely dependent");
   }
-  den *= 4;
+  const mpz_class num = s.power();
   const int sign = sgn(num);
   if (sign == 0) return 0.0;
   // |num| / den to at least 64 bits: shift num left, divide, truncate.
