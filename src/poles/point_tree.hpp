@@ -71,12 +71,13 @@ class PointTree {
   static double inflated_squared_radius(double r) { return r * r * (1.0 + 0x1p-20) + 0x1p-1022; }
 
  private:
-  struct Node {
-    double low = 0;           // inner: the largest coordinate of the lower child along `axis`
-    double high = 0;          // inner: the smallest coordinate of the upper child along `axis`
+  /// One cache line: the box of the node's points, which bounds its points' distances
+  /// (see box_bound() in the .cpp), and the children or the leaf's slots.
+  struct alignas(64) Node {
+    double lo[3] = {0, 0, 0};
+    double hi[3] = {0, 0, 0};
     std::uint32_t first = 0;  // inner: lower child; leaf: first slot in the coordinate arrays
     std::uint32_t last = 0;   // inner: upper child; leaf: one past its last slot
-    std::uint8_t axis = 0;
     bool leaf = false;
   };
   struct Best {
@@ -89,10 +90,8 @@ class PointTree {
   std::uint32_t build(std::vector<Node>& nodes, std::uint32_t* first, std::uint32_t* last,
                       const Box3& region, const Box3& tight, std::span<const Point3> points,
                       unsigned depth, unsigned threads) const;
-  /// The squared gaps between q and the root's box, per axis (zero inside it), into cut.
-  void root_gaps(const double* q, double* cut) const;
-  void search(std::uint32_t node, const double* q, double* cut, Best& best) const;
-  void collect(std::uint32_t node, const double* q, double* cut, double r2, double limit,
+  void search(std::uint32_t node, const double* q, Best& best) const;
+  void collect(std::uint32_t node, const double* q, double r2, double limit,
                std::vector<std::uint32_t>& out) const;
   void collect_leaf(const Node& node, const double* q, double limit,
                     std::vector<std::uint32_t>& out) const;
@@ -105,7 +104,6 @@ class PointTree {
   std::uint32_t leaf_size_;
   bool vectorized_ = false;
   std::uint32_t* ids_base_ = nullptr;  // during construction: the ids being partitioned
-  Box3 root_box_;
   std::vector<Node> nodes_;
   // The points in leaf order, by coordinate, each leaf padded with NaN to a multiple of 4
   // (a NaN distance never compares as small); index_ maps a slot to the point's index.
