@@ -173,6 +173,8 @@ void Builder::run() {
     input_keys = {};
     owner_store_.assign(n, 0);
     owner_ = owner_store_.data();
+    star_cell_store_.assign(n, kNoCell);
+    star_cell_ = star_cell_store_.data();
     use_locks_ = options_.parallel_scheme == TriangulationOptions::ParallelScheme::locks;
     t_.stats_.threads = workers_;
     for (std::size_t k = rounds_begin; k < n;) {
@@ -193,6 +195,8 @@ void Builder::run() {
     keys_ = {};
     owner_store_ = {};
     owner_ = nullptr;
+    star_cell_store_ = {};
+    star_cell_ = nullptr;
   } else {
     insert_sequentially(4, n, n);
   }
@@ -365,9 +369,11 @@ void Builder::insert_round_in_parallel(std::size_t begin, std::size_t end) {
 
 // The rest, in rank order (along the curve), one by one. The points are sparse (10^6
 // points on a torus, two workers: about 10^4 in the last round), so the walk from the
-// previous one is long; where a point's last attempt gave up, its walk had come near it,
-// and that cell, if it still exists (a cell since reused lies near the worker's later
-// points: its free cells are reused first), is often a nearer start.
+// previous one is long. Nearer starts: where a point's last attempt gave up, its walk had
+// come near it, and that cell, if it still exists (a cell since reused lies near the
+// worker's later points: its free cells are reused first), is often nearer; nearer still,
+// as a rule, a cell made with the point before or after it on the curve (star_cell_), if
+// that cell still exists.
 void Builder::insert_deferred(const std::vector<VertexId>& deferred) {
   // The latest cell of each point (a point can be deferred by several passes).
   std::stable_sort(deferred_cells_.begin(), deferred_cells_.end(),
@@ -379,13 +385,34 @@ void Builder::insert_deferred(const std::vector<VertexId>& deferred) {
       if (deferred_cells_[h].first == p) hint = deferred_cells_[h].second;
       ++h;
     }
-    if (hint != kNoCell && t_.is_cell(hint) && t_.infinite_index(hint) < 0) {
-      // The start locate_conflict would take, or the hint if that is nearer.
-      const Point3& q = points_[p];
-      const CellId previous = star_is_latest_ ? nearest_star_cell(q, last_) : last_;
-      const bool nearer = !t_.is_cell(previous) || t_.infinite_index(previous) >= 0 ||
-                          centroid_distance(hint, q) < centroid_distance(previous, q);
-      last_ = nearer ? hint : previous;
+    const Point3& q = points_[p];
+    CellId best = star_is_latest_ ? nearest_star_cell(q, last_) : last_;
+    double best_distance = t_.is_cell(best) && t_.infinite_index(best) < 0
+                               ? centroid_distance(best, q)
+                               : std::numeric_limits<double>::infinity();
+    const auto consider = [&](CellId c) {
+      if (c == kNoCell || !t_.is_cell(c) || t_.infinite_index(c) >= 0) return;
+      const double d = centroid_distance(c, q);
+      if (d < best_distance) {
+        best_distance = d;
+        best = c;
+      }
+    };
+    consider(hint);
+    if (star_cell_ != nullptr) {
+      // A cell that still has the neighbour as a vertex lies next to it (a cell id reused
+      // for a cell without it could be anywhere).
+      const auto neighbour = [&](VertexId v) {
+        const CellId c = star_cell_[v];
+        if (c == kNoCell || !t_.is_cell(c)) return;
+        const Cell& k = t_.cells_[c];
+        if (k.v[0] == v || k.v[1] == v || k.v[2] == v || k.v[3] == v) consider(c);
+      };
+      if (p > 0) neighbour(p - 1);
+      if (static_cast<std::size_t>(p) + 1 < t_.points_.size()) neighbour(p + 1);
+    }
+    if (best != kNoCell) {
+      last_ = best;
       star_is_latest_ = false;
     }
     insert(p);
@@ -413,6 +440,7 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
   for (unsigned w = 0; w < k; ++w) {
     Builder& b = worker(w);
     b.owner_ = owner_;
+    b.star_cell_ = star_cell_;
     b.worker_ = static_cast<std::uint8_t>(w);
     b.locking_ = locking;
     const bool paired = locking && (w ^ 1u) < k;
@@ -1408,6 +1436,7 @@ void Builder::build_star(VertexId p) {
   }
   link_star();
   last_ = star_.front();
+  if (star_cell_ != nullptr) star_cell_[p] = last_;
   star_is_latest_ = true;
 }
 

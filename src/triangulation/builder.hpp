@@ -279,6 +279,12 @@ class Builder {
   /// main's owner_store_: the owning worker of each vertex (a pass without locks), or 0
   /// (free) / holder + 1 (a pass with locks; atomic accesses only).
   std::uint8_t* owner_ = nullptr;
+  /// Per rank, a cell made when the vertex was inserted (kNoCell before; it may have been
+  /// destroyed since): where a deferred point's walk can start, next to the points before
+  /// and after it on the curve (main's star_cell_store_, shared with the workers, each
+  /// writing its own points' entries).
+  std::vector<CellId> star_cell_store_;
+  CellId* star_cell_ = nullptr;
   std::uint8_t worker_ = 0;
   VertexId shared_end_ = 0;                // ranks [0, shared_end_) are shared (insert_first)
   bool locking_ = false;                   // this pass takes vertex locks
