@@ -60,31 +60,22 @@ void check_soup(const TetrahedronSoup& soup, unsigned threads) {
   }
 }
 
-/// The first tetrahedron of range k when m tetrahedra are cut into `ranges` ranges.
-std::uint32_t range_start(std::size_t m, unsigned ranges, unsigned k) {
-  return static_cast<std::uint32_t>(m * k / ranges);
-}
-
 /// Per sample: the incident tetrahedra chosen as p⁺ and p⁻ (kNoTet if none), and the
 /// vector p⁺ − s.
 struct Choice {
   /// Per tetrahedron, its circumcentre's offset (Circumsphere::offset; the squared radius
   /// is its squared norm, computed again where needed: the same value, in three quarters
-  /// of the memory), in one array per range of tetrahedra (see range_start), each
-  /// allocated and filled by its range's thread. Smaller arrays fit more often in pages
-  /// freed earlier (see analyse_poles).
+  /// of the memory), in one array per chunk of `chunk` tetrahedra, each allocated and
+  /// filled by the thread that takes the chunk. Arrays of a few MiB fit more often in
+  /// pages freed earlier than one of the whole soup's size (see analyse_poles).
   std::vector<std::vector<Vec3>> offsets;
-  std::size_t tetrahedra = 0;
+  std::size_t chunk = 1;
   static detail::Circumsphere sphere_of(const Vec3& offset) {
     return {offset, squared_norm(offset)};
   }
-  /// The sphere of tetrahedron t (its range found by a scan: not for every tetrahedron).
   detail::Circumsphere sphere(std::uint32_t t) const {
-    unsigned k = 0;
-    while (k + 1 < ranges() && t >= range_start(tetrahedra, ranges(), k + 1)) ++k;
-    return sphere_of(offsets[k][t - range_start(tetrahedra, ranges(), k)]);
+    return sphere_of(offsets[t / chunk][t % chunk]);
   }
-  unsigned ranges() const { return static_cast<unsigned>(offsets.size()); }
   std::vector<std::uint32_t> first, second;
   std::vector<double> first_r2, second_r2;
   std::vector<Vec3> first_direction;
@@ -93,19 +84,20 @@ struct Choice {
 /// Whether tetrahedron t wins a tie in the circumradius against `current` (kNoTet: no
 /// tetrahedron yet): the one whose vertex ids, sorted, come first lexicographically. So
 /// the choice does not depend on the order of the soup (the Delaunay triangulation's cell
-/// numbering, which parallel insertion does not fix).
+/// numbering, which parallel insertion does not fix). Between copies of one tetrahedron,
+/// the first in the soup.
 bool wins_tie(const TetrahedronSoup& soup, std::uint32_t t, std::uint32_t current) {
   if (current == kNoTet) return true;
   std::array<std::uint32_t, 4> a = soup.tets[t];
   std::array<std::uint32_t, 4> b = soup.tets[current];
   std::sort(a.begin(), a.end());
   std::sort(b.begin(), b.end());
-  return a < b;
+  return a < b || (a == b && t < current);
 }
 
 /// Whether tetrahedron t (squared circumradius r2) comes before the current choice: the
-/// larger circumradius, ties by wins_tie. An order of the tetrahedra, except for copies
-/// of one tetrahedron, where the first in the soup stays.
+/// larger circumradius, ties by wins_tie. A strict order of the tetrahedra, so the choice
+/// does not depend on the order in which they are seen.
 bool better(const TetrahedronSoup& soup, double r2, std::uint32_t t, double current_r2,
             std::uint32_t current) {
   return r2 > current_r2 || (r2 == current_r2 && wins_tie(soup, t, current));
@@ -124,9 +116,9 @@ struct Best {
 
 /// Circumspheres of the tetrahedra [begin, end), and among them each sample's p⁺
 /// candidate.
-void spheres_and_first_poles(const TetrahedronSoup& soup, Choice& choice, unsigned range,
+void spheres_and_first_poles(const TetrahedronSoup& soup, Choice& choice, std::size_t chunk,
                              std::uint32_t begin, std::uint32_t end, std::uint32_t n, Best best) {
-  std::vector<Vec3>& offsets = choice.offsets[range];
+  std::vector<Vec3>& offsets = choice.offsets[chunk];
   offsets.resize(end - begin);
   for (std::uint32_t t = begin; t < end; ++t) {
     const auto& q = soup.tets[t];
@@ -143,9 +135,9 @@ void spheres_and_first_poles(const TetrahedronSoup& soup, Choice& choice, unsign
 }
 
 /// Among the tetrahedra [begin, end), each sample's p⁻ candidate (its p⁺ chosen).
-void second_poles(const TetrahedronSoup& soup, const Choice& choice, unsigned range,
+void second_poles(const TetrahedronSoup& soup, const Choice& choice, std::size_t chunk,
                   std::uint32_t begin, std::uint32_t end, std::uint32_t n, Best best) {
-  const std::vector<Vec3>& offsets = choice.offsets[range];
+  const std::vector<Vec3>& offsets = choice.offsets[chunk];
   for (std::uint32_t t = begin; t < end; ++t) {
     const auto& q = soup.tets[t];
     const detail::Circumsphere cs = Choice::sphere_of(offsets[t - begin]);
@@ -162,28 +154,36 @@ void second_poles(const TetrahedronSoup& soup, const Choice& choice, unsigned ra
   }
 }
 
-/// Runs pass(k, begin, end, best) over the tetrahedra in `ranges` consecutive ranges
-/// (range_start), range k on thread k, each with a choice per sample of its own (range 0
-/// writes `tet`, `r2` directly), then keeps for each sample the best of the ranges'
-/// choices, earlier ranges first: the same choice as one pass over all tetrahedra, since
-/// `better` orders them (and keeps the first of equal copies).
+/// Runs pass(j, begin, end, best) over the tetrahedra, cut into chunks of `chunk`, on
+/// `workers` threads, each taking the next chunk when it is done with one (a fixed range
+/// per thread left a core idle for a fifth of the pass: one thread's offsets landed in
+/// fresh pages, the other's in pages freed earlier), each thread with a choice per sample
+/// of its own (thread 0 writes `tet`, `r2` directly); then keeps for each sample the best
+/// of the threads' choices: the same choice as one pass over all tetrahedra in any order,
+/// since `better` is a strict order.
 template <class Pass>
-void choose_in_ranges(const TetrahedronSoup& soup, unsigned ranges, std::vector<std::uint32_t>& tet,
-                      std::vector<double>& r2, Pass&& pass) {
+void choose_in_chunks(const TetrahedronSoup& soup, unsigned workers, std::size_t chunk,
+                      std::vector<std::uint32_t>& tet, std::vector<double>& r2, Pass&& pass) {
   const std::size_t n = tet.size();
   const std::size_t m = soup.tets.size();
-  std::vector<std::vector<std::uint32_t>> tets(ranges - 1);
-  std::vector<std::vector<double>> r2s(ranges - 1);
-  detail::run_blocks(ranges, [&](unsigned k) {
+  const std::size_t chunks = (m + chunk - 1) / chunk;
+  std::vector<std::vector<std::uint32_t>> tets(workers - 1);
+  std::vector<std::vector<double>> r2s(workers - 1);
+  std::atomic<std::size_t> next{0};
+  detail::run_blocks(workers, [&](unsigned k) {
     Best best{tet.data(), r2.data()};
     if (k > 0) {
       tets[k - 1].assign(n, kNoTet);
       r2s[k - 1].assign(n, -1.0);
       best = {tets[k - 1].data(), r2s[k - 1].data()};
     }
-    pass(k, range_start(m, ranges, k), range_start(m, ranges, k + 1), best);
+    for (std::size_t j = next.fetch_add(1, std::memory_order_relaxed); j < chunks;
+         j = next.fetch_add(1, std::memory_order_relaxed)) {
+      pass(j, static_cast<std::uint32_t>(j * chunk),
+           static_cast<std::uint32_t>(std::min(m, (j + 1) * chunk)), best);
+    }
   });
-  for (unsigned k = 1; k < ranges; ++k) {
+  for (unsigned k = 1; k < workers; ++k) {
     for (std::size_t s = 0; s < n; ++s) {
       const std::uint32_t t = tets[k - 1][s];
       if (t != kNoTet && better(soup, r2s[k - 1][s], t, r2[s], tet[s])) {
@@ -206,21 +206,23 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
   choice.first_r2.assign(n, -1.0);
   choice.second_r2.assign(n, -1.0);
   choice.first_direction.resize(n);
-  // Each thread takes one range of tetrahedra and chooses among them for every sample
-  // (circumspheres too, in the first pass); the ranges' choices are then merged. Threads
+  // Each thread takes chunks of tetrahedra and chooses among them for every sample
+  // (circumspheres too, in the first pass); the threads' choices are then merged. Threads
   // that each read every tetrahedron for a range of samples were slower: compute_poles,
   // two threads, medians of interleaved runs: double torus 0.083 -> 0.061 s, 3·10^5 torus
-  // samples 0.52 -> 0.41 s.
+  // samples 0.52 -> 0.41 s. About 16 chunks per thread, of at most 2^19 tetrahedra (12
+  // MiB of offsets).
   const unsigned hardware = std::max(1U, std::thread::hardware_concurrency());
   const auto ranges = static_cast<unsigned>(std::max<std::size_t>(
       1, std::min<std::size_t>(threads != 0 ? threads : hardware,
                                soup.tets.size() / std::max<std::size_t>(1, tetrahedra_per_thread))));
   const auto samples = static_cast<std::uint32_t>(n);
-  choice.offsets.resize(ranges);
-  choice.tetrahedra = soup.tets.size();
-  choose_in_ranges(soup, ranges, choice.first, choice.first_r2,
-                   [&](unsigned k, std::uint32_t begin, std::uint32_t end, Best best) {
-                     spheres_and_first_poles(soup, choice, k, begin, end, samples, best);
+  const std::size_t m = soup.tets.size();
+  choice.chunk = std::clamp<std::size_t>(m / (std::size_t{16} * ranges), 1, std::size_t{1} << 19);
+  choice.offsets.resize((m + choice.chunk - 1) / choice.chunk);
+  choose_in_chunks(soup, ranges, choice.chunk, choice.first, choice.first_r2,
+                   [&](std::size_t j, std::uint32_t begin, std::uint32_t end, Best best) {
+                     spheres_and_first_poles(soup, choice, j, begin, end, samples, best);
                    });
   parallel_chunks(n, ranges, std::size_t{1} << 14, [&](std::size_t begin, std::size_t end, unsigned) {
     for (auto s = static_cast<std::uint32_t>(begin); s < end; ++s) {
@@ -228,9 +230,9 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
       if (t != kNoTet) choice.first_direction[s] = direction(soup, choice.sphere(t), t, s);
     }
   });
-  choose_in_ranges(soup, ranges, choice.second, choice.second_r2,
-                   [&](unsigned k, std::uint32_t begin, std::uint32_t end, Best best) {
-                     second_poles(soup, choice, k, begin, end, samples, best);
+  choose_in_chunks(soup, ranges, choice.chunk, choice.second, choice.second_r2,
+                   [&](std::size_t j, std::uint32_t begin, std::uint32_t end, Best best) {
+                     second_poles(soup, choice, j, begin, end, samples, best);
                    });
 
   // Distinct poles, numbered in the order of their owners (the smallest sample having
