@@ -213,24 +213,24 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
   // samples 0.52 -> 0.41 s. About 16 chunks per thread, of at most 2^19 tetrahedra (12
   // MiB of offsets).
   const unsigned hardware = std::max(1U, std::thread::hardware_concurrency());
-  const auto ranges = static_cast<unsigned>(std::max<std::size_t>(
+  const auto workers = static_cast<unsigned>(std::max<std::size_t>(
       1, std::min<std::size_t>(threads != 0 ? threads : hardware,
                                soup.tets.size() / std::max<std::size_t>(1, tetrahedra_per_thread))));
   const auto samples = static_cast<std::uint32_t>(n);
   const std::size_t m = soup.tets.size();
-  choice.chunk = std::clamp<std::size_t>(m / (std::size_t{16} * ranges), 1, std::size_t{1} << 19);
+  choice.chunk = std::clamp<std::size_t>(m / (std::size_t{16} * workers), 1, std::size_t{1} << 19);
   choice.offsets.resize((m + choice.chunk - 1) / choice.chunk);
-  choose_in_chunks(soup, ranges, choice.chunk, choice.first, choice.first_r2,
+  choose_in_chunks(soup, workers, choice.chunk, choice.first, choice.first_r2,
                    [&](std::size_t j, std::uint32_t begin, std::uint32_t end, Best best) {
                      spheres_and_first_poles(soup, choice, j, begin, end, samples, best);
                    });
-  parallel_chunks(n, ranges, std::size_t{1} << 14, [&](std::size_t begin, std::size_t end, unsigned) {
+  parallel_chunks(n, workers, std::size_t{1} << 14, [&](std::size_t begin, std::size_t end, unsigned) {
     for (auto s = static_cast<std::uint32_t>(begin); s < end; ++s) {
       const std::uint32_t t = choice.first[s];
       if (t != kNoTet) choice.first_direction[s] = direction(soup, choice.sphere(t), t, s);
     }
   });
-  choose_in_chunks(soup, ranges, choice.chunk, choice.second, choice.second_r2,
+  choose_in_chunks(soup, workers, choice.chunk, choice.second, choice.second_r2,
                    [&](std::size_t j, std::uint32_t begin, std::uint32_t end, Best best) {
                      second_poles(soup, choice, j, begin, end, samples, best);
                    });
@@ -259,12 +259,12 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
   };
   std::vector<std::array<std::uint32_t, 2>> pole_ids(n, {kNoPole, kNoPole});
   std::vector<std::uint8_t> owns(n, 0);  // bit w: the sample owns its choice w (p⁺, p⁻)
-  std::vector<std::size_t> block_offset(ranges + 1, 0);
-  const auto block_begin = [&](unsigned k) { return static_cast<std::uint32_t>(n * k / ranges); };
+  std::vector<std::size_t> block_offset(workers + 1, 0);
+  const auto block_begin = [&](unsigned k) { return static_cast<std::uint32_t>(n * k / workers); };
   const auto chosen = [&](std::uint32_t s, int which) {
     return which == 0 ? choice.first[s] : choice.second[s];
   };
-  detail::run_blocks(ranges, [&](unsigned k) {
+  detail::run_blocks(workers, [&](unsigned k) {
     std::size_t count = 0;
     std::uint32_t owner = 0;
     int slot = 0;
@@ -278,20 +278,20 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
     }
     block_offset[k + 1] = count;
   });
-  for (unsigned k = 0; k < ranges; ++k) block_offset[k + 1] += block_offset[k];
-  const std::size_t pole_count = block_offset[ranges];
+  for (unsigned k = 0; k < workers; ++k) block_offset[k + 1] += block_offset[k];
+  const std::size_t pole_count = block_offset[workers];
   PoleSet poles;
   poles.sample_count = n;
   // Fresh pages, mostly (the soup and the spheres still hold the earlier stages' pages):
   // value-initialising them all on one thread took 0.23-0.25 s for the 1.7·10^6 poles of
   // 10^6 torus samples, with the other core idle. Two threads share them.
   const auto allocate = [&](unsigned k) {
-    if (k == 0 || ranges == 1) {
+    if (k == 0 || workers == 1) {
       poles.centre.resize(pole_count);
       poles.owner.resize(pole_count);
       poles.label.assign(pole_count, PoleLabel::unlabelled);
     }
-    if (k == 1 || ranges == 1) {
+    if (k == 1 || workers == 1) {
       poles.radius.resize(pole_count);
       poles.tet.resize(pole_count);
       poles.sites.resize(pole_count);
@@ -299,8 +299,8 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
       poles.representative.resize(n);
     }
   };
-  detail::run_blocks(std::min(ranges, 2U), allocate);
-  detail::run_blocks(ranges, [&](unsigned k) {
+  detail::run_blocks(std::min(workers, 2U), allocate);
+  detail::run_blocks(workers, [&](unsigned k) {
     std::size_t next = block_offset[k];
     for (std::uint32_t s = block_begin(k); s < block_begin(k + 1); ++s) {
       for (int which = 0; which < 2; ++which) {
@@ -317,7 +317,7 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
     }
   });
   // Every owner's numbers are written: the choices owned by another sample take them.
-  detail::run_blocks(ranges, [&](unsigned k) {
+  detail::run_blocks(workers, [&](unsigned k) {
     std::uint32_t owner = 0;
     int slot = 0;
     for (std::uint32_t s = block_begin(k); s < block_begin(k + 1); ++s) {
@@ -330,7 +330,7 @@ PoleSet compute_poles(const TetrahedronSoup& soup, unsigned threads,
       }
     }
   });
-  parallel_chunks(n, ranges, std::size_t{1} << 14, [&](std::size_t begin, std::size_t end, unsigned) {
+  parallel_chunks(n, workers, std::size_t{1} << 14, [&](std::size_t begin, std::size_t end, unsigned) {
     for (std::size_t s = begin; s < end; ++s) {
       const std::uint32_t r =
           soup.representative.empty() ? static_cast<std::uint32_t>(s) : soup.representative[s];

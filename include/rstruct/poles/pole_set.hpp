@@ -86,8 +86,9 @@ struct PoleSet {
 
 /// Poles of the samples from a Delaunay tetrahedralisation, in `threads` threads (0:
 /// hardware concurrency) but at most one per `tetrahedra_per_thread` tetrahedra; each takes
-/// a range of the tetrahedra (its circumspheres, and the poles among them of every sample),
-/// and the ranges' choices are merged. The result does not depend on either parameter.
+/// chunks of the tetrahedra as it finishes the last (their circumspheres, and the poles
+/// among them of every sample), and the threads' choices are merged. The result does not
+/// depend on either parameter, nor on which thread took which chunk.
 /// \throws InvalidInput if a tetrahedron has a vertex index out of range, or a representative
 /// is out of range or is itself not its own representative.
 /// \throws InternalError if a tetrahedron is flat.
