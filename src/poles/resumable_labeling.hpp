@@ -13,11 +13,17 @@ namespace rstruct::poles::detail {
 
 class Labeler;
 
+/// automatic: a breadth-first two-colouring, which gives the greedy's labels and counts
+/// when no evidence contradicts it, and otherwise the greedy from scratch (see Labeler in
+/// pole_labeling.cpp); greedy: the greedy only (for tests and comparisons).
+enum class LabelingMethod { automatic, greedy };
+
 class ResumableLabeling {
  public:
-  /// Checks the inputs (as label_poles), clears the labels, builds the queue.
+  /// Checks the inputs (as label_poles), clears the labels, seeds the queue.
   ResumableLabeling(PoleSet& poles, std::span<const Point3> samples,
-                    const LabelingParameters& parameters);
+                    const LabelingParameters& parameters,
+                    LabelingMethod method = LabelingMethod::automatic);
   ResumableLabeling(const ResumableLabeling&) = delete;
   ResumableLabeling& operator=(const ResumableLabeling&) = delete;
   ~ResumableLabeling();
@@ -27,6 +33,8 @@ class ResumableLabeling {
   bool run(const std::atomic<bool>& stop);
   /// The statistics, as label_poles returns them. \pre run() returned true.
   LabelingStats finish();
+  /// Whether the automatic method met contradicting evidence and ran the greedy.
+  bool fell_back() const;
 
  private:
   PoleSet& poles_;

@@ -23,6 +23,11 @@
 /// labelled with the side of that evidence, and passes evidence to every pole it is compared
 /// with (labelled or not, so that contradictions are seen).
 ///
+/// Computed by a breadth-first two-colouring from the box poles wherever that gives the same
+/// labels and counts, i.e. when no evidence contradicts the colouring (then the greedy's
+/// result is the one colouring that every piece of evidence agrees with); at the first
+/// contradiction, by the greedy itself (src/poles/pole_labeling.cpp).
+///
 /// Failures are reported, never guessed: a pole no evidence reaches stays unlabelled; a pole
 /// with equal inner and outer evidence stays unlabelled (a tie); a labelled pole that also
 /// received evidence for the other side is counted as contradictory; a sample whose two
