@@ -35,7 +35,7 @@ PruneResult prune_balls(std::span<const Ball> shrunk, std::span<const Point3> po
     const std::span<const std::int32_t> rows(
         reinterpret_cast<const std::int32_t*>(sets.rows.data()), sets.rows.size());
     return setcover::Instance::from_csr(static_cast<std::int32_t>(sets.row_count), starts,
-                                        rows);
+                                        rows, {}, options.threads);
   }();
   sets_stage.finish();
 

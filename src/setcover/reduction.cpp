@@ -388,7 +388,7 @@ void Presolver::split_components() {
     auto& comp = out.components[c];
     comp.instance = Instance::from_csr(static_cast<std::int32_t>(comp.rows.size()),
                                        std::move(starts[c]), std::move(entries[c]),
-                                       std::move(costs[c]));
+                                       std::move(costs[c]), threads_);
   }
 }
 

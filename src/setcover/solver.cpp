@@ -112,7 +112,7 @@ void improve_by_local_search(const Instance& inst, detail::LagrangianState& st,
       return;
     }
     copy = Instance::from_csr(inst.num_rows(), std::move(start), std::move(entries),
-                              std::move(costs));
+                              std::move(costs), budget.threads);
   }
   const Instance& sub = all_survive ? inst : *copy;
   const auto original = [&](std::int32_t k) { return all_survive ? k : map[k]; };

@@ -1,6 +1,7 @@
 #include "rstruct/setcover/instance.hpp"
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -65,4 +66,71 @@ TEST_CASE("non-integer costs are classified") {
   const Instance inst = Instance::from_columns(1, {{0}, {0}}, {0.5, 2.0});
   CHECK_FALSE(inst.has_integer_costs());
   CHECK_FALSE(inst.is_unicost());
+}
+
+TEST_CASE("large instances: several threads check and transpose them as one does") {
+  // 2^21 entries, above the size at which from_csr uses its threads: columns of random
+  // length (some empty) over random rows, sorted, as the covering sets give them; then the
+  // same with repeats and unsorted columns (the one-thread pass merges them), and with a
+  // row out of range.
+  std::uint64_t state = 99;
+  const auto next = [&](std::uint64_t bound) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (state >> 33) % bound;
+  };
+  constexpr std::int32_t kRows = 300'000;
+  std::vector<std::int64_t> start{0};
+  std::vector<std::int32_t> rows;
+  while (rows.size() < (std::size_t{1} << 21)) {
+    std::vector<std::int32_t> column(next(40));
+    for (auto& r : column) r = static_cast<std::int32_t>(next(kRows));
+    std::sort(column.begin(), column.end());
+    column.erase(std::unique(column.begin(), column.end()), column.end());
+    rows.insert(rows.end(), column.begin(), column.end());
+    start.push_back(static_cast<std::int64_t>(rows.size()));
+  }
+  const auto same = [](const Instance& a, const Instance& b) {
+    if (a.num_rows() != b.num_rows() || a.num_cols() != b.num_cols() ||
+        a.num_entries() != b.num_entries()) {
+      return false;
+    }
+    for (std::int32_t j = 0; j < a.num_cols(); ++j) {
+      if (!std::equal(a.column(j).begin(), a.column(j).end(), b.column(j).begin(), b.column(j).end())) {
+        return false;
+      }
+    }
+    for (std::int32_t i = 0; i < a.num_rows(); ++i) {
+      if (!std::equal(a.row(i).begin(), a.row(i).end(), b.row(i).begin(), b.row(i).end())) return false;
+    }
+    return true;
+  };
+  const Instance one = Instance::from_csr(kRows, start, rows, {}, 1);
+  REQUIRE(one.is_valid());
+  REQUIRE(one.num_entries() == static_cast<std::int64_t>(rows.size()));
+  for (const unsigned threads : {2u, 3u, 0u}) {
+    INFO(threads << " threads");
+    const Instance many = Instance::from_csr(kRows, start, rows, {}, threads);
+    CHECK(many.is_valid());
+    CHECK(same(one, many));
+  }
+  // Repeats and disorder in some columns.
+  std::vector<std::int32_t> messy = rows;
+  for (std::size_t j = 0; j + 1 < start.size(); j += 97) {
+    const auto b = static_cast<std::size_t>(start[j]), e = static_cast<std::size_t>(start[j + 1]);
+    if (e - b >= 2) {
+      std::swap(messy[b], messy[e - 1]);
+      messy[b + 1] = messy[b];
+    }
+  }
+  const Instance messy_one = Instance::from_csr(kRows, start, messy, {}, 1);
+  const Instance messy_two = Instance::from_csr(kRows, start, messy, {}, 2);
+  CHECK(messy_one.is_valid());
+  CHECK(messy_one.num_entries() < one.num_entries());
+  CHECK(same(messy_one, messy_two));
+  // A row out of range far into the entries: the same error.
+  std::vector<std::int32_t> bad = rows;
+  bad[bad.size() - 5] = kRows;
+  CHECK_THROWS_WITH(Instance::from_csr(kRows, start, bad, {}, 2), Catch::Contains("outside [0, 300000)"));
+  bad[bad.size() - 5] = -1;
+  CHECK_THROWS_WITH(Instance::from_csr(kRows, start, bad, {}, 2), Catch::Contains("names row -1"));
 }

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "rstruct/core/huge_page_allocator.hpp"
+
 namespace rstruct::setcover {
 
 /// Immutable set-cover instance: minimise Σ c_j x_j subject to Σ_{j ∋ i} x_j ≥ 1 for every
@@ -31,12 +33,15 @@ class Instance {
   /// col_rows[col_start[j] .. col_start[j+1]). `costs` empty means unicost.
   /// \throws InvalidInput as from_columns, and on a col_start that is not a non-decreasing
   /// sequence from 0 to col_rows.size().
+  /// `threads` (0: all) check and transpose a large instance.
   static Instance from_csr(std::int32_t num_rows, std::span<const std::int64_t> col_start,
-                           std::span<const std::int32_t> col_rows, std::vector<double> costs = {});
+                           std::span<const std::int32_t> col_rows, std::vector<double> costs = {},
+                           unsigned threads = 1);
   /// The same, taking over the arrays instead of copying them (an instance of 10^6 samples'
   /// shrunk balls has 2.5·10^7 entries: each copy is 100 MB of fresh memory).
   static Instance from_csr(std::int32_t num_rows, std::vector<std::int64_t>&& col_start,
-                           std::vector<std::int32_t>&& col_rows, std::vector<double> costs = {});
+                           std::vector<std::int32_t>&& col_rows, std::vector<double> costs = {},
+                           unsigned threads = 1);
 
   std::int32_t num_rows() const { return num_rows_; }
   std::int32_t num_cols() const { return static_cast<std::int32_t>(costs_.size()); }
@@ -78,14 +83,15 @@ class Instance {
   std::string summary() const;
 
  private:
-  void build_rows();
+  void build_rows(unsigned threads);
   void classify_costs();
 
   std::int32_t num_rows_ = 0;
   std::vector<std::int64_t> col_start_{0};
   std::vector<std::int32_t> col_rows_;
   std::vector<std::int64_t> row_start_{0};
-  std::vector<std::int32_t> row_cols_;
+  // Default-initialised (the transposition writes every entry, on several threads).
+  std::vector<std::int32_t, HugePageAllocator<std::int32_t>> row_cols_;
   std::vector<double> costs_;
   bool unicost_ = true;
   bool integer_costs_ = true;
