@@ -117,7 +117,13 @@ class Labeler {
   /// poles). A later call goes on where this one stopped.
   bool run(LabelingStats& stats, const std::atomic<bool>& stop) {
     if (!greedy_) {
-      if (run_colouring(stats, stop)) return true;
+      if (run_colouring(stats, stop)) {
+        // Nothing reads the lists any more (a colouring that ended has no contrary
+        // evidence to report): their memory goes back while the caller goes on.
+        incidence_ = Incidence{};
+        queue_ = {};
+        return true;
+      }
       if (!contradicted_) return false;  // stopped
       std::fill(poles_.label.begin(), poles_.label.end(), PoleLabel::unlabelled);
       stats = LabelingStats{};
