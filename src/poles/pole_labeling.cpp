@@ -172,9 +172,25 @@ class Labeler {
   /// Gives p's colour, or the other, to every pole the evidence from p reaches (the
   /// greedy's propagate() without the queue); false if one already has the other colour.
   bool colour_from(std::uint32_t p, LabelingStats& stats) {
+    return for_each_evidence(p, stats, [&](std::uint32_t q, PoleLabel side, double) {
+      PoleLabel& label = poles_.label[q];
+      if (label == PoleLabel::unlabelled) {
+        label = side;
+        queue_.push_back(q);
+      }
+      return label == side;
+    });
+  }
+
+  /// Calls give(q, side, weight) for every piece of evidence from labelled pole p (see
+  /// pole_labeling.hpp), pole by pole through p's four lists, until it returns false;
+  /// false then, true otherwise.
+  template <class Give>
+  bool for_each_evidence(std::uint32_t p, LabelingStats& stats, Give&& give) {
     const PoleLabel same = poles_.label[p];
     const PoleLabel other = same == PoleLabel::inner ? PoleLabel::outer : PoleLabel::inner;
     const Incidence::Entry* entries = incidence_.entries.data();
+    // The four lists are scattered: ask for all of them before working through the first.
     for (const std::uint32_t own : incidence_.own[p]) {
       if (own != Incidence::kNoList) __builtin_prefetch(&entries[own]);
     }
@@ -188,18 +204,10 @@ class Labeler {
         if (k != own) {
           ++stats.pairs_examined;
           const double c = dot(up, e.unit);
-          // The same tests in the same order as propagate().
-          const PoleLabel implied = c >= parameters_.same_min_cos       ? same
-                                    : -c >= parameters_.opposite_min_cos ? other
-                                                                         : PoleLabel::unlabelled;
-          if (implied != PoleLabel::unlabelled) {
-            PoleLabel& label = poles_.label[e.pole()];
-            if (label == PoleLabel::unlabelled) {
-              label = implied;
-              queue_.push_back(e.pole());
-            } else if (label != implied) {
-              return false;
-            }
+          if (c >= parameters_.same_min_cos) {
+            if (!give(e.pole(), same, c)) return false;
+          } else if (-c >= parameters_.opposite_min_cos) {
+            if (!give(e.pole(), other, -c)) return false;
           }
         }
         if ((e.tagged_pole & Incidence::kLast) != 0) break;
@@ -254,37 +262,14 @@ class Labeler {
   }
 
   void propagate(std::uint32_t p, LabelingStats& stats) {
-    const PoleLabel same = poles_.label[p];
-    const PoleLabel other = same == PoleLabel::inner ? PoleLabel::outer : PoleLabel::inner;
-    const Incidence::Entry* entries = incidence_.entries.data();
-    // The four lists are scattered: ask for all of them before working through the first.
-    for (const std::uint32_t own : incidence_.own[p]) {
-      if (own != Incidence::kNoList) __builtin_prefetch(&entries[own]);
-    }
     // The evidence first, the (scattered) evidence records it goes to asked for meanwhile;
     // then given in the same order.
     gifts_.clear();
-    for (const std::uint32_t own : incidence_.own[p]) {
-      if (own == Incidence::kNoList) continue;
-      std::uint32_t k = own;
-      while ((entries[k].tagged_pole & Incidence::kFirst) == 0) --k;
-      const Vec3 up = entries[own].unit;
-      for (;; ++k) {
-        const Incidence::Entry& e = entries[k];
-        if (k != own) {
-          ++stats.pairs_examined;
-          const double c = dot(up, e.unit);
-          if (c >= parameters_.same_min_cos) {
-            __builtin_prefetch(&evidence_[e.pole()]);
-            gifts_.push_back({e.pole(), same, c});
-          } else if (-c >= parameters_.opposite_min_cos) {
-            __builtin_prefetch(&evidence_[e.pole()]);
-            gifts_.push_back({e.pole(), other, -c});
-          }
-        }
-        if ((e.tagged_pole & Incidence::kLast) != 0) break;
-      }
-    }
+    for_each_evidence(p, stats, [&](std::uint32_t q, PoleLabel side, double weight) {
+      __builtin_prefetch(&evidence_[q]);
+      gifts_.push_back({q, side, weight});
+      return true;
+    });
     for (const Gift& g : gifts_) give(g.pole, g.side, g.weight);
   }
 
