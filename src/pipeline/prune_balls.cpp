@@ -26,16 +26,16 @@ PruneResult prune_balls(std::span<const Ball> shrunk, std::span<const Point3> po
     const poles::CoveringSets sets = poles::covering_sets(shrunk, points, options.threads);
     result.entries = sets.entry_count();
     // The set-cover module works on signed 32-bit rows and 64-bit offsets. The rows are
-    // read in place (int32 may alias uint32; every row id is below row_count <= 2^31 - 1).
+    // read in place (int32 may alias uint32; every row id is below row_count <= 2^31 - 1)
+    // and copied once, into the arrays the instance takes over.
     if (sets.row_count > static_cast<std::uint32_t>(INT32_MAX)) {
       throw InvalidInput("pruning: more than 2^31 - 1 points");
     }
-    const std::vector<std::int64_t> starts(sets.column_offsets.begin(),
-                                           sets.column_offsets.end());
-    const std::span<const std::int32_t> rows(
-        reinterpret_cast<const std::int32_t*>(sets.rows.data()), sets.rows.size());
-    return setcover::Instance::from_csr(static_cast<std::int32_t>(sets.row_count), starts,
-                                        rows, {}, options.threads);
+    const auto* rows = reinterpret_cast<const std::int32_t*>(sets.rows.data());
+    return setcover::Instance::from_csr(
+        static_cast<std::int32_t>(sets.row_count),
+        std::vector<std::int64_t>(sets.column_offsets.begin(), sets.column_offsets.end()),
+        std::vector<std::int32_t>(rows, rows + sets.rows.size()), {}, options.threads);
   }();
   sets_stage.finish();
 
