@@ -42,50 +42,28 @@ struct Soup {
   std::vector<std::uint32_t> representative;
 };
 
-/// q sorted increasingly, by a sorting network (five compare-exchanges, no branches):
-/// std::sort on four ids was about a third of the soup's time.
-std::array<std::uint32_t, 4> sorted(std::array<std::uint32_t, 4> q) {
-  const auto exchange = [&](std::size_t i, std::size_t j) {
-    const std::uint32_t a = q[i], b = q[j];
-    q[i] = std::min(a, b);
-    q[j] = std::max(a, b);
-  };
-  exchange(0, 1);
-  exchange(2, 3);
-  exchange(0, 2);
-  exchange(1, 3);
-  exchange(1, 2);
-  return q;
-}
-
-/// Takes dt's finite cells, in id order, each with its vertex ids sorted: a tetrahedron's
-/// circumcentre is computed from the same vertex order whatever the triangulation stored
-/// (with parallel insertion, that depends on timing). The cells are compacted over the
-/// cell array instead of copied to a new one, whose pages were touched for the first time
-/// (about 1.8 s per GB on this machine), and the cells' pages past them go back to the
-/// allocator for compute_poles. 10^6 torus samples (bench_seed --torus 1000000 --levels
-/// 0.5:0.03), 5 interleaved pairs: the delaunay stage, which includes the soup,
-/// 6.46-7.03 -> 5.71-6.32 s; the poles stage 1.31-1.49 -> 1.55-1.82 s (its circumcentres
-/// no longer fit in pages the triangulation freed); end to end, median 15.54 -> 15.08 s;
-/// peak memory 1377 -> 1204 MiB.
-Soup soup_of(triangulation::RegularTriangulation3& dt, std::size_t sample_count,
-             unsigned threads) {
+/// The Delaunay triangulation's finite cells, in id order, each with its vertex ids
+/// sorted: a tetrahedron's circumcentre is computed from the same vertex order whatever
+/// the triangulation stored (with parallel insertion, that depends on timing). The cells
+/// are compacted over the cell array instead of copied to a new one, whose pages were
+/// touched for the first time (about 1.8 s per GB on this machine), and the cells' pages
+/// past them go back to the allocator for compute_poles. 10^6 torus samples (bench_seed
+/// --torus 1000000 --levels 0.5:0.03), 5 interleaved pairs: the delaunay stage, which
+/// includes the soup, 6.46-7.03 -> 5.71-6.32 s; the poles stage 1.31-1.49 -> 1.55-1.82 s
+/// (its circumcentres no longer fit in pages the triangulation freed); end to end, median
+/// 15.54 -> 15.08 s; peak memory 1377 -> 1204 MiB.
+Soup soup_of(triangulation::DelaunayCells& dt, std::size_t sample_count) {
   Soup soup;
   soup.representative.resize(sample_count);
   for (std::uint32_t s = 0; s < sample_count; ++s) soup.representative[s] = s;
-  for (const auto& d : dt.duplicate_points()) {
+  for (const auto& d : dt.duplicates) {
     if (d.point < sample_count) soup.representative[d.point] = d.vertex;
   }
-  for (const auto& h : dt.hidden_points()) {
+  for (const auto& h : dt.hidden) {
     // Unweighted Delaunay hides nothing; a hidden sample would be a triangulation bug.
     throw InternalError("poles: Delaunay triangulation hid sample " + std::to_string(h.point));
   }
-  soup.tets = dt.take_finite_cells(threads);
-  const std::span<std::array<std::uint32_t, 4>> q = soup.tets.quadruples();
-  constexpr std::size_t kChunk = std::size_t{1} << 16;
-  parallel_chunks(q.size(), threads, kChunk, [&](std::size_t begin, std::size_t end, unsigned) {
-    for (std::size_t t = begin; t < end; ++t) q[t] = sorted(q[t]);
-  });
+  soup.tets = std::move(dt.cells);
   return soup;
 }
 
@@ -142,10 +120,18 @@ PoleAnalysis analyse_poles(std::span<const Point3> samples, const PoleAnalysisOp
   Report& r = report != nullptr ? *report : local;
   check_labeling_parameters(options.labeling);  // before the expensive steps
   PoleAnalysis analysis;
-  std::vector<Point3> sites(samples.begin(), samples.end());
   const std::vector<Point3> box = bounding_box_sites(samples, options.box_scale);
   analysis.bbox_diagonal = checked_bounding_box(samples).diagonal();
-  sites.insert(sites.end(), box.begin(), box.end());
+  // The samples and the box corners, in an array of their size (appending the corners to
+  // a copy of the samples would double its capacity: 24 MB more for 10^6 samples).
+  const auto make_sites = [&](std::vector<Point3>& sites) {
+    sites.clear();
+    sites.reserve(samples.size() + box.size());
+    sites.insert(sites.end(), samples.begin(), samples.end());
+    sites.insert(sites.end(), box.begin(), box.end());
+  };
+  std::vector<Point3> sites;
+  make_sites(sites);
   Soup soup;
   {
     Report::Stage stage(r, "delaunay");
@@ -158,11 +144,14 @@ PoleAnalysis analyse_poles(std::span<const Point3> samples, const PoleAnalysisOp
     // 0.373 -> 0.324 / 0.319 / 0.324 / 0.360 / 0.355 s; that round alone (rstruct
     // delaunay, 4 pairs) 0.091 / 0.059 / 0.064 / 0.063 -> 0.049 / 0.042 / 0.046 / 0.051 s.
     dt_options.parallel_scheme = triangulation::TriangulationOptions::ParallelScheme::locks;
-    triangulation::RegularTriangulation3 dt(std::move(sites), dt_options);
-    analysis.duplicate_samples = dt.duplicate_points().size();
-    analysis.delaunay = dt.stats();
-    sites.assign(dt.points().begin(), dt.points().end());
-    soup = soup_of(dt, samples.size(), options.threads);
+    // The sites are given up (a copy would stay in memory beside the cells at their
+    // largest) and made again after.
+    triangulation::DelaunayCells dt =
+        triangulation::RegularTriangulation3::delaunay_cells(std::move(sites), dt_options);
+    analysis.duplicate_samples = dt.duplicates.size();
+    analysis.delaunay = dt.stats;
+    soup = soup_of(dt, samples.size());
+    make_sites(sites);
   }
   analysis.tetrahedra = soup.tets.size();
   {

@@ -67,11 +67,12 @@ bool collinear(const Point3& a, const Point3& b, const Point3& c) {
 
 }  // namespace
 
-Builder::Builder(RegularTriangulation3& t, const TriangulationOptions& options)
+Builder::Builder(RegularTriangulation3& t, const TriangulationOptions& options, Finish finish)
     : t_(t),
       options_(options),
       points_(t.points_.data()),
       weights_(t.weights_.empty() ? nullptr : t.weights_.data()),
+      finish_(finish),
       rng_(options.seed | 1u),
       free_head_(&t.free_head_),
       free_count_(&t.free_count_),
@@ -206,6 +207,16 @@ void Builder::run() {
   vertex_local_.shrink_to_fit();
   vertex_mark_.clear();
   vertex_mark_.shrink_to_fit();
+  if (finish_ == Finish::cells_only) {
+    // The cells are about to be compacted (delaunay_cells), which renames them through
+    // order_ on all threads as it goes: neither the renaming pass over every cell, the
+    // points' permutation back to input order, nor the vertex index (one thread, one more
+    // pass over every cell) is needed. The reports are resolved in ranks.
+    if (!reorder_) t_.order_.clear();
+    t_.resolve_hidden(raw_hidden_);
+    t_.stats_.insertion_seconds = clock.seconds();
+    return;
+  }
   if (reorder_) restore_input_order();
   if (options_.canonical_order || (options_.canonical_order_after_locks && took_locks_)) {
     canonicalize_cells();

@@ -16,7 +16,13 @@ namespace rstruct::triangulation {
 
 class Builder {
  public:
-  Builder(RegularTriangulation3& t, const TriangulationOptions& options);
+  /// How run() ends: with a triangulation ready for queries (input ids, vertex index,
+  /// reports), or, for RegularTriangulation3::delaunay_cells, with the cells and reports
+  /// still in ranks when the points were reordered (t.order_ kept: rank → input id; empty
+  /// when the ids are input ids) and no vertex index.
+  enum class Finish : std::uint8_t { queries, cells_only };
+  Builder(RegularTriangulation3& t, const TriangulationOptions& options,
+          Finish finish = Finish::queries);
   /// A helper thread's builder for the parallel passes of `main`: its own search state,
   /// marks, free list and statistics over main's triangulation.
   Builder(const Builder& main, std::uint8_t worker);
@@ -262,6 +268,7 @@ class Builder {
   /// the current insertion, if any (it is removed when the point is in conflict).
   VertexId duplicate_of_ = kInfiniteVertex;
   bool reorder_ = false;
+  Finish finish_ = Finish::queries;
   std::uint64_t rng_;
 
   // Free list and statistics: the triangulation's, or a helper's own during a pass.

@@ -39,7 +39,32 @@ CellQuadruples::~CellQuadruples() = default;
 // therefore compacted in waves, [0, 1), [1, 2), [2, 4), [4, 8), ...: every chunk of a wave
 // writes only over chunks of earlier waves, all read, and the writes of one wave are
 // disjoint. Each chunk is read cell by cell, every cell before anything is written over it.
+namespace {
+
+/// q sorted increasingly, by a sorting network (five compare-exchanges, no branches):
+/// std::sort on four ids was about a third of the pole analysis's pass over the cells.
+std::array<VertexId, 4> sorted(std::array<VertexId, 4> q) {
+  const auto exchange = [&](std::size_t i, std::size_t j) {
+    const VertexId a = q[i], b = q[j];
+    q[i] = std::min(a, b);
+    q[j] = std::max(a, b);
+  };
+  exchange(0, 1);
+  exchange(2, 3);
+  exchange(0, 2);
+  exchange(1, 3);
+  exchange(1, 2);
+  return q;
+}
+
+}  // namespace
+
 CellQuadruples RegularTriangulation3::take_finite_cells(unsigned threads) {
+  return take_finite_cells(threads, nullptr, false);
+}
+
+CellQuadruples RegularTriangulation3::take_finite_cells(unsigned threads, const VertexId* rename,
+                                                        bool sort_each) {
   constexpr std::size_t kChunk = std::size_t{1} << 16;
   const std::size_t cap = cells_.size();
   const std::size_t chunks = (cap + kChunk - 1) / kChunk;
@@ -71,8 +96,22 @@ CellQuadruples RegularTriangulation3::take_finite_cells(unsigned threads) {
     for (; in != end; ++in) {
       const Cell k = *in;  // read whole before anything is written over it
       if (!finite(k)) continue;
-      ::new (static_cast<void*>(out)) std::array<VertexId, 4>{k.v[0], k.v[1], k.v[2], k.v[3]};
+      std::array<VertexId, 4> q{k.v[0], k.v[1], k.v[2], k.v[3]};
+      if (rename != nullptr) {
+        for (VertexId& v : q) v = rename[v];
+      }
+      ::new (static_cast<void*>(out)) std::array<VertexId, 4>{q};
       out += sizeof(std::array<VertexId, 4>);
+    }
+    // Sorted in a second loop over the chunk's quadruples (in the cache now): in the same
+    // loop, the network's hard-to-predict branches among the renaming's loads kept those
+    // from overlapping (10^6 torus samples, one thread: 0.65 s against 0.14-0.16 s).
+    if (sort_each) {
+      auto* q = std::launder(reinterpret_cast<std::array<VertexId, 4>*>(
+          base + offset[j] * sizeof(std::array<VertexId, 4>)));
+      auto* const q_end = q + (out - base) / static_cast<std::ptrdiff_t>(sizeof(std::array<VertexId, 4>)) -
+                          static_cast<std::ptrdiff_t>(offset[j]);
+      for (; q != q_end; ++q) *q = sorted(*q);
     }
   };
   for (std::size_t first = 0; first < chunks; first = std::max<std::size_t>(1, 2 * first)) {

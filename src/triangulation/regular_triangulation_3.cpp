@@ -72,6 +72,45 @@ RegularTriangulation3::RegularTriangulation3(std::vector<Point3> points,
   }
 }
 
+RegularTriangulation3::RegularTriangulation3(std::vector<Point3> points,
+                                             const TriangulationOptions& options, CellsOnly)
+    : points_(std::move(points)) {
+  validate_points(points_);
+  Builder(*this, options, Builder::Finish::cells_only).run();
+}
+
+DelaunayCells RegularTriangulation3::delaunay_cells(std::vector<Point3> points,
+                                                    const TriangulationOptions& options) {
+  DelaunayCells result;
+  if (options.after_insertion || options.canonical_order || options.canonical_order_after_locks) {
+    RegularTriangulation3 t(std::move(points), options);
+    result.duplicates = t.duplicates_;
+    result.hidden = t.hidden_;
+    for (HiddenPoint& h : result.hidden) h.cell = kNoCell;
+    result.stats = t.stats_;
+    result.cells = t.take_finite_cells(options.threads, nullptr, true);
+    return result;
+  }
+  // Builder::run has left the cells and reports in ranks (order_ non-empty) or in input
+  // ids (order_ empty).
+  RegularTriangulation3 t(std::move(points), options, CellsOnly{});
+  const VertexId* rename = t.order_.empty() ? nullptr : t.order_.data();
+  result.duplicates = std::move(t.duplicates_);
+  result.hidden = std::move(t.hidden_);
+  if (rename != nullptr) {
+    for (DuplicatePoint& d : result.duplicates) d = {rename[d.point], rename[d.vertex]};
+    for (HiddenPoint& h : result.hidden) h.point = rename[h.point];
+    std::sort(result.duplicates.begin(), result.duplicates.end(),
+              [](const DuplicatePoint& a, const DuplicatePoint& b) { return a.point < b.point; });
+    std::sort(result.hidden.begin(), result.hidden.end(),
+              [](const HiddenPoint& a, const HiddenPoint& b) { return a.point < b.point; });
+  }
+  for (HiddenPoint& h : result.hidden) h.cell = kNoCell;
+  result.stats = t.stats_;
+  result.cells = t.take_finite_cells(options.threads, rename, true);
+  return result;
+}
+
 RegularTriangulation3::RegularTriangulation3(RegularTriangulation3&&) noexcept = default;
 RegularTriangulation3& RegularTriangulation3::operator=(RegularTriangulation3&&) noexcept =
     default;
@@ -265,6 +304,10 @@ void RegularTriangulation3::finalize(std::span<const HiddenPoint> raw_hidden) {
   number_of_vertices_ = static_cast<std::size_t>(
       std::count_if(vertex_cell_.begin(), vertex_cell_.end(),
                     [](CellId c) { return c != kNoCell; }));
+  resolve_hidden(raw_hidden);
+}
+
+void RegularTriangulation3::resolve_hidden(std::span<const HiddenPoint> raw_hidden) {
   hidden_.clear();
   duplicates_.clear();
   std::uint64_t rng = 0x853C49E6748FEA9Bull;

@@ -1,7 +1,9 @@
 // RegularTriangulation3::take_finite_cells: the finite cells' vertices compacted over the
-// cell array, against a copy of them made before.
+// cell array, against a copy of them made before; RegularTriangulation3::delaunay_cells
+// (the cells renamed to input ids while compacted) against the full construction.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -10,7 +12,9 @@
 
 namespace {
 
+using rstruct::Point3;
 using rstruct::triangulation::CellId;
+using rstruct::triangulation::DelaunayCells;
 using rstruct::triangulation::kInfiniteVertex;
 using rstruct::triangulation::RegularTriangulation3;
 using rstruct::triangulation::TriangulationOptions;
@@ -46,7 +50,88 @@ void check_take(RegularTriangulation3 t, unsigned threads) {
   CHECK(t.hidden_points().size() == hidden);
 }
 
+using Quadruples = std::vector<std::array<VertexId, 4>>;
+
+Quadruples sorted_each(std::span<const std::array<VertexId, 4>> cells) {
+  Quadruples out(cells.begin(), cells.end());
+  for (auto& q : out) std::sort(q.begin(), q.end());
+  return out;
+}
+
+/// delaunay_cells(points, options) against constructing the triangulation with the same
+/// options and taking its cells: the same quadruples (each sorted), in the same order when
+/// the cell ids do not depend on timing (`same_order`), the same duplicates, no hidden
+/// point, the same statistics of a sequential insertion.
+void check_delaunay_cells(const std::vector<Point3>& points, const TriangulationOptions& options,
+                          bool same_order) {
+  RegularTriangulation3 full(points, options);
+  const std::vector<rstruct::triangulation::DuplicatePoint> duplicates(
+      full.duplicate_points().begin(), full.duplicate_points().end());
+  const auto stats = full.stats();
+  Quadruples expected = sorted_each(full.take_finite_cells(options.threads).quadruples());
+  const DelaunayCells lean = RegularTriangulation3::delaunay_cells(points, options);
+  Quadruples got(lean.cells.quadruples().begin(), lean.cells.quadruples().end());
+  REQUIRE(got.size() == expected.size());
+  for (const auto& q : got) CHECK(std::is_sorted(q.begin(), q.end()));
+  if (!same_order) {
+    std::sort(expected.begin(), expected.end());
+    std::sort(got.begin(), got.end());
+  }
+  std::size_t wrong = 0;
+  for (std::size_t k = 0; k < got.size(); ++k) wrong += got[k] != expected[k];
+  CHECK(wrong == 0);
+  REQUIRE(lean.duplicates.size() == duplicates.size());
+  for (std::size_t k = 0; k < duplicates.size(); ++k) {
+    CHECK(lean.duplicates[k].point == duplicates[k].point);
+    CHECK(lean.duplicates[k].vertex == duplicates[k].vertex);
+  }
+  CHECK(lean.hidden.empty());
+  // Parallel passes count the work of abandoned attempts, which depends on timing.
+  if (options.threads == 1) {
+    CHECK(lean.stats.power_test_calls == stats.power_test_calls);
+    CHECK(lean.stats.conflict_cells == stats.conflict_cells);
+    CHECK(lean.stats.walk_steps == stats.walk_steps);
+  } else {
+    CHECK(lean.stats.threads == stats.threads);
+    CHECK(lean.stats.lock_passes > 0);
+  }
+}
+
 }  // namespace
+
+TEST_CASE("delaunay_cells: the cells and reports of the full construction, each sorted") {
+  using namespace rstruct::test;
+  TriangulationOptions options;
+  SECTION("uniform, one thread") { check_delaunay_cells(uniform_points(3000, 11), options, true); }
+  SECTION("a grid (cospherical cells)") { check_delaunay_cells(grid_points(6, 5, 7), options, true); }
+  SECTION("duplicates: reported in input ids") {
+    check_delaunay_cells(with_duplicates(2000, 12, 300).points, options, true);
+    check_delaunay_cells(duplicate_points(500, 40, 13), options, true);
+  }
+  SECTION("in input order (no renaming)") {
+    options.spatial_sort = false;
+    check_delaunay_cells(with_duplicates(1500, 14, 100).points, options, true);
+  }
+  SECTION("built on two threads with locks, as the pole analysis does") {
+    // Torus points, exact copies of 50 of them, the 8 corners of a box inserted first.
+    std::vector<Point3> points = torus_points(20000, 19);
+    for (int i = 0; i < 50; ++i) points.push_back(points[static_cast<std::size_t>(97 * i)]);
+    const Input corners = torus_with_box_corners();
+    points.insert(points.end(), corners.points.end() - 8, corners.points.end());
+    options.threads = 2;
+    options.insert_first = 8;
+    options.parallel_scheme = TriangulationOptions::ParallelScheme::locks;
+    options.parallel_min_round = 2000;
+    check_delaunay_cells(points, options, false);
+  }
+  SECTION("a canonical order: the full construction's cells") {
+    options.threads = 2;
+    options.parallel_scheme = TriangulationOptions::ParallelScheme::locks;
+    options.canonical_order = true;
+    options.parallel_min_round = 2000;
+    check_delaunay_cells(torus_points(20000, 15), options, true);
+  }
+}
 
 TEST_CASE("take_finite_cells: the finite cells in id order, whatever the threads") {
   using namespace rstruct::test;
