@@ -81,20 +81,15 @@ RegularTriangulation3::RegularTriangulation3(std::vector<Point3> points,
 
 DelaunayCells RegularTriangulation3::delaunay_cells(std::vector<Point3> points,
                                                     const TriangulationOptions& options) {
-  DelaunayCells result;
-  if (options.after_insertion || options.canonical_order || options.canonical_order_after_locks) {
-    RegularTriangulation3 t(std::move(points), options);
-    result.duplicates = t.duplicates_;
-    result.hidden = t.hidden_;
-    for (HiddenPoint& h : result.hidden) h.cell = kNoCell;
-    result.stats = t.stats_;
-    result.cells = t.take_finite_cells(options.threads, nullptr, true);
-    return result;
-  }
-  // Builder::run has left the cells and reports in ranks (order_ non-empty) or in input
-  // ids (order_ empty).
-  RegularTriangulation3 t(std::move(points), options, CellsOnly{});
+  // A caller watching the insertions, or a canonical order, gets the full construction
+  // (its cells and reports in input ids, order_ cleared). Otherwise Builder::run leaves
+  // them in ranks (order_ kept) or in input ids (order_ empty).
+  const bool full =
+      options.after_insertion || options.canonical_order || options.canonical_order_after_locks;
+  RegularTriangulation3 t = full ? RegularTriangulation3(std::move(points), options)
+                                 : RegularTriangulation3(std::move(points), options, CellsOnly{});
   const VertexId* rename = t.order_.empty() ? nullptr : t.order_.data();
+  DelaunayCells result;
   result.duplicates = std::move(t.duplicates_);
   result.hidden = std::move(t.hidden_);
   if (rename != nullptr) {
