@@ -59,10 +59,6 @@ Soup soup_of(triangulation::DelaunayCells& dt, std::size_t sample_count) {
   for (const auto& d : dt.duplicates) {
     if (d.point < sample_count) soup.representative[d.point] = d.vertex;
   }
-  for (const auto& h : dt.hidden) {
-    // Unweighted Delaunay hides nothing; a hidden sample would be a triangulation bug.
-    throw InternalError("poles: Delaunay triangulation hid sample " + std::to_string(h.point));
-  }
   soup.tets = std::move(dt.cells);
   return soup;
 }

@@ -89,18 +89,18 @@ DelaunayCells RegularTriangulation3::delaunay_cells(std::vector<Point3> points,
   RegularTriangulation3 t = full ? RegularTriangulation3(std::move(points), options)
                                  : RegularTriangulation3(std::move(points), options, CellsOnly{});
   const VertexId* rename = t.order_.empty() ? nullptr : t.order_.data();
+  if (!t.hidden_.empty()) {
+    throw InternalError("delaunay_cells: the Delaunay triangulation hid point " +
+                        std::to_string(rename != nullptr ? rename[t.hidden_.front().point]
+                                                         : t.hidden_.front().point));
+  }
   DelaunayCells result;
   result.duplicates = std::move(t.duplicates_);
-  result.hidden = std::move(t.hidden_);
   if (rename != nullptr) {
     for (DuplicatePoint& d : result.duplicates) d = {rename[d.point], rename[d.vertex]};
-    for (HiddenPoint& h : result.hidden) h.point = rename[h.point];
     std::sort(result.duplicates.begin(), result.duplicates.end(),
               [](const DuplicatePoint& a, const DuplicatePoint& b) { return a.point < b.point; });
-    std::sort(result.hidden.begin(), result.hidden.end(),
-              [](const HiddenPoint& a, const HiddenPoint& b) { return a.point < b.point; });
   }
-  for (HiddenPoint& h : result.hidden) h.cell = kNoCell;
   result.stats = t.stats_;
   result.cells = t.take_finite_cells(options.threads, rename, true);
   return result;

@@ -218,11 +218,9 @@ struct DelaunayCells {
   /// The finite cells' vertex ids (input ids), each quadruple sorted increasingly (so no
   /// longer oriented), in increasing cell id.
   CellQuadruples cells;
-  /// As RegularTriangulation3::duplicate_points().
+  /// As RegularTriangulation3::duplicate_points(). (A Delaunay triangulation hides no
+  /// point: every input point is a vertex or a duplicate.)
   std::vector<DuplicatePoint> duplicates;
-  /// As RegularTriangulation3::hidden_points(), but with no cell (kNoCell): the cells are
-  /// gone. Always empty: a Delaunay triangulation hides no point.
-  std::vector<HiddenPoint> hidden;
   TriangulationStats stats;
 };
 
