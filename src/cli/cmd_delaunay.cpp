@@ -111,6 +111,7 @@ class DelaunayCommand : public Command {
     data["taken_points"] = t.stats().taken_points;
     data["border_passes"] = t.stats().border_passes;
     data["lock_passes"] = t.stats().lock_passes;
+    data["exhausted_workers"] = t.stats().exhausted_workers;
     data["peak_memory_bytes"] = peak_memory_bytes();
     context.info(std::to_string(n) + " points: " + std::to_string(t.number_of_vertices()) +
                  " vertices, " + std::to_string(t.hidden_points().size()) + " hidden, " +

@@ -526,12 +526,28 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
   }
   if (region[k] > cells.capacity()) cells.reserve(region[k] + region[k] / 4);
   cells.resize(region[k]);  // default-initialised: written by the workers (or freed below)
+  // With locks a worker may insert more points than its stretch holds (it takes its
+  // partner's), and a stretch may need more cells per point than the average: the workers
+  // take blocks of one pool as they need them. With fixed regions, 10^6 points on a torus,
+  // two workers: in 4 of 7 runs one worker's region of the last round ran out (20-33 ids
+  // left) while the other's had 2.2 million left, and its partner then inserted the rest
+  // of its own stretch alone for 0.4-0.7 s. Without locks each worker keeps its region, so
+  // that the cell ids do not depend on timing.
+  CellPool pool;
+  if (locking) {
+    pool.next.store(region[0], std::memory_order_relaxed);
+    pool.end = region[k];
+    // 2^16 cells are 2 MiB, a huge page; a small pass's pool is split finer.
+    pool.block = std::clamp<std::uint64_t>((region[k] - region[0]) / (8 * std::uint64_t{k}),
+                                           std::uint64_t{256}, std::uint64_t{1} << 16);
+  }
   for (unsigned w = 0; w < k; ++w) {
     Builder& b = worker(w);
     b.marks_.resize(region[k] / 32 + 1, 0);
     b.in_region_ = true;
-    b.region_next_ = static_cast<CellId>(region[w]);
-    b.region_end_ = static_cast<CellId>(region[w + 1]);
+    b.region_next_ = static_cast<CellId>(locking ? region[0] : region[w]);
+    b.region_end_ = static_cast<CellId>(locking ? region[0] : region[w + 1]);
+    b.pool_ = locking ? &pool : nullptr;
     b.exhausted_ = false;
     b.deferred_.clear();
   }
@@ -554,12 +570,13 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
         errors[0] = std::current_exception();
       }
     }
+    for (unsigned w = 0; w < k; ++w) worker(w).pool_ = nullptr;  // (no blocks after the pass)
     for (const std::exception_ptr& e : errors) {
       if (e) std::rethrow_exception(e);
     }
   }
-  // Unused ids of the regions join the free list; the last region's are cut off. The
-  // helpers' free lists, hidden points and counts join the triangulation's.
+  // Without locks, unused ids of the regions join the free list; the last region's are cut
+  // off. The helpers' free lists, hidden points and counts join the triangulation's.
   //
   // The unused ids are chained on all threads, each to the id below it (the lowest to the
   // list's head): the list a loop pushing them in increasing order made. Their pages are
@@ -567,7 +584,7 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
   // round's first region can leave a fifth unused, some 40 MB. That loop, on one thread,
   // took 0.0003-0.18 s after the last round (6 runs; 0.065 s typical), now 0.0008-0.053 s
   // (0.013 s typical).
-  for (unsigned w = 0; w + 1 < k; ++w) {
+  for (unsigned w = 0; w + 1 < k && !locking; ++w) {
     const CellId lo = worker(w).region_next_;
     Cell* const data = cells.data();
     parallel_chunks(worker(w).region_end_ - lo, k, std::size_t{1} << 16,
@@ -579,17 +596,23 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
                       }
                     });
   }
+  if (locking) {
+    // The rest of each worker's last block joins its free list (fewer than a block: pages
+    // the worker has mostly touched already); the pool's untaken ids are cut off.
+    for (unsigned w = 0; w < k; ++w) worker(w).free_region_rest();
+    cells.resize(std::min(pool.next.load(std::memory_order_relaxed), pool.end));
+  }
   for (unsigned w = 0; w < k; ++w) {
     Builder& b = worker(w);
     b.in_region_ = false;
     b.locking_ = false;
-    if (w + 1 < k) {
+    if (!locking && w + 1 < k) {
       if (b.region_next_ < b.region_end_) {
         cells[b.region_next_].n[0] = t_.free_head_;
         t_.free_head_ = b.region_end_ - 1;
         t_.free_count_ += b.region_end_ - b.region_next_;
       }
-    } else {
+    } else if (!locking) {
       cells.resize(b.region_next_);
     }
     deferred.insert(deferred.end(), lists[w].begin(),
@@ -599,6 +622,7 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
     deferred.insert(deferred.end(),
                     lists[w].begin() + static_cast<std::ptrdiff_t>(taken & 0xffffffffu),
                     lists[w].end() - static_cast<std::ptrdiff_t>(taken >> 32));
+    if (b.exhausted_) ++t_.stats_.exhausted_workers;
     b.forget_claims();
     for (const auto& [p, cell] : b.deferred_) deferred.push_back(p);
     deferred_cells_.insert(deferred_cells_.end(), b.deferred_.begin(), b.deferred_.end());
@@ -793,10 +817,12 @@ bool Builder::insert_owned(VertexId p) {
     clear_conflict_marks();
     return false;
   }
-  if (boundary_.size() > *free_count_ + (region_end_ - region_next_)) {
-    clear_conflict_marks();
-    exhausted_ = true;
-    return false;
+  while (boundary_.size() > *free_count_ + (region_end_ - region_next_)) {
+    if (!take_pool_block()) {
+      clear_conflict_marks();
+      exhausted_ = true;
+      return false;
+    }
   }
   build_star(p);
   collect_hidden_vertices(duplicate_of_);
@@ -812,6 +838,30 @@ bool Builder::insert_owned(VertexId p) {
   for (const VertexId v : local_vertices_) vertex_local_[v] = 0;
   release_conflict_region();
   return true;
+}
+
+bool Builder::take_pool_block() {
+  if (pool_ == nullptr) return false;
+  // Relaxed: the count only hands out disjoint ranges; each range's cells are then written
+  // by its worker alone, and the pass's end joins the threads.
+  const std::uint64_t at = pool_->next.fetch_add(pool_->block, std::memory_order_relaxed);
+  if (at >= pool_->end) return false;
+  free_region_rest();
+  region_next_ = static_cast<CellId>(at);
+  region_end_ = static_cast<CellId>(std::min(at + pool_->block, pool_->end));
+  return true;
+}
+
+void Builder::free_region_rest() {
+  auto& cells = t_.cells_;
+  for (CellId c = region_end_; c > region_next_;) {
+    --c;
+    cells[c].v[0] = RegularTriangulation3::kFreeMark;
+    cells[c].n[0] = *free_head_;
+    *free_head_ = c;
+    ++*free_count_;
+  }
+  region_next_ = region_end_;
 }
 
 void Builder::clear_conflict_marks() {

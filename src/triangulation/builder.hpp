@@ -304,6 +304,19 @@ class Builder {
   CellId region_next_ = 0;
   CellId region_end_ = 0;
   bool exhausted_ = false;                 // the region ran out during this pass
+  /// A pass with locks: the cell ids its workers take blocks of, as they need them (see
+  /// parallel_pass).
+  struct CellPool {
+    std::atomic<std::uint64_t> next{0};
+    std::uint64_t end = 0;
+    std::uint64_t block = 0;
+  };
+  CellPool* pool_ = nullptr;
+  /// The rest of the region to the worker's free list, and a new region from the pool;
+  /// false when the pool is used up (or there is none).
+  bool take_pool_block();
+  /// The region's unused ids to the worker's free list.
+  void free_region_rest();
   std::vector<std::pair<std::size_t, VertexId>> retry_;  // (attempt number, point) to retry
   Claim* own_claim_ = nullptr;        // the claims on the worker's stretch (during a pass)
   Claim* partner_claim_ = nullptr;    // the partner's, if any

@@ -14,6 +14,7 @@
 
 namespace {
 
+using rstruct::Point3;
 using rstruct::test::Input;
 using rstruct::test::torus_points;
 using rstruct::triangulation::TriangulationOptions;
@@ -117,5 +118,32 @@ TEST_CASE("shared points inserted first, with locks") {
   for (const unsigned threads : {2u, 3u}) {
     CHECK(parallel_stats(half, threads, Scheme::locks, 15000).parallel_points >
           (half.points.size() - 15000) / 2);
+  }
+}
+
+TEST_CASE("locks: a stretch needing more new cells per point than the average has them") {
+  // Half the points on a torus (long cells), half in a cube with weights that hide many of
+  // them (few cells per point), the two apart along one axis: along the axis the Hilbert
+  // curve splits first, one worker's stretch holds the torus. With locks the workers' new
+  // cells come from one pool (Builder::parallel_pass). From a region per worker sized by
+  // the average cells per point, the torus's worker ran out (2 runs of 2: along axis 0)
+  // and its partner inserted the rest alone.
+  const std::size_t half = 20000;
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    Input in{torus_points(half, 51), {}};
+    for (Point3& p : in.points) p[axis] -= 3;
+    for (Point3 p : rstruct::test::uniform_points(half, 52)) {
+      for (std::size_t a = 0; a < 3; ++a) p[a] *= 2.6;
+      p[axis] += 3;
+      in.points.push_back(p);
+    }
+    in.weights.assign(half, 0.0);
+    for (const double w : rstruct::test::hiding_weights(half, 0.05, 53)) in.weights.push_back(w);
+    const TriangulationStats s = parallel_stats(in, 2, Scheme::locks);
+    INFO("axis " << axis << ": " << s.exhausted_workers << " workers ran out; "
+                 << s.deferred_points << " of " << s.parallel_points << " deferred");
+    CHECK(s.exhausted_workers == 0);
+    CHECK(s.parallel_points > in.points.size() / 2);
+    CHECK(s.deferred_points * 20 < s.parallel_points);
   }
 }

@@ -180,6 +180,7 @@ struct TriangulationStats {
   std::uint64_t taken_points = 0;        ///< points a thread took from its partner's stretch
   std::uint64_t border_passes = 0;       ///< parallel passes with fixed borders
   std::uint64_t lock_passes = 0;         ///< parallel passes with vertex locks
+  std::uint64_t exhausted_workers = 0;   ///< workers of a pass that ran out of room for new cells
 };
 
 /// The result of is_valid(): ok, or the first violated property in words.
