@@ -114,6 +114,21 @@ struct Best {
   double* r2;
 };
 
+/// The vertices of a tetrahedron some places ahead, and their samples' choices so far, are
+/// asked for before they are needed (the soup's order is the triangulation's cell order:
+/// its vertices are scattered over the samples).
+constexpr std::uint32_t kAhead = 16;
+void prefetch_tet(const TetrahedronSoup& soup, const std::array<std::uint32_t, 4>& q,
+                  std::uint32_t n, Best best) {
+  for (const std::uint32_t s : q) {
+    __builtin_prefetch(&soup.vertices[s]);
+    if (s < n) {
+      __builtin_prefetch(&best.r2[s]);
+      __builtin_prefetch(&best.tet[s]);
+    }
+  }
+}
+
 /// Circumspheres of the tetrahedra [begin, end), and among them each sample's p⁺
 /// candidate.
 void spheres_and_first_poles(const TetrahedronSoup& soup, Choice& choice, std::size_t chunk,
@@ -121,6 +136,7 @@ void spheres_and_first_poles(const TetrahedronSoup& soup, Choice& choice, std::s
   std::vector<Vec3>& offsets = choice.offsets[chunk];
   offsets.resize(end - begin);
   for (std::uint32_t t = begin; t < end; ++t) {
+    if (t + kAhead < end) prefetch_tet(soup, soup.tets[t + kAhead], n, best);
     const auto& q = soup.tets[t];
     const detail::Circumsphere cs = detail::circumsphere(
         soup.vertices[q[0]], soup.vertices[q[1]], soup.vertices[q[2]], soup.vertices[q[3]]);
@@ -139,6 +155,7 @@ void second_poles(const TetrahedronSoup& soup, const Choice& choice, std::size_t
                   std::uint32_t begin, std::uint32_t end, std::uint32_t n, Best best) {
   const std::vector<Vec3>& offsets = choice.offsets[chunk];
   for (std::uint32_t t = begin; t < end; ++t) {
+    if (t + kAhead < end) prefetch_tet(soup, soup.tets[t + kAhead], n, best);
     const auto& q = soup.tets[t];
     const detail::Circumsphere cs = Choice::sphere_of(offsets[t - begin]);
     for (const std::uint32_t s : q) {
