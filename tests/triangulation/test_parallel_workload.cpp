@@ -125,9 +125,10 @@ TEST_CASE("locks: a stretch needing more new cells per point than the average ha
   // Half the points on a torus (long cells), half in a cube with weights that hide many of
   // them (few cells per point), the two apart along one axis: along the axis the Hilbert
   // curve splits first, one worker's stretch holds the torus. With locks the workers' new
-  // cells come from one pool (Builder::parallel_pass). From a region per worker sized by
-  // the average cells per point, the torus's worker ran out (2 runs of 2: along axis 0)
-  // and its partner inserted the rest alone.
+  // cells come from one pool (Builder::parallel_pass). With a region per worker sized by
+  // the average cells per point, workers ran out in each of 3 runs (along axis 0 in every
+  // run, in two runs along every axis), and a worker that runs out leaves the rest to its
+  // partner.
   const std::size_t half = 20000;
   for (std::size_t axis = 0; axis < 3; ++axis) {
     Input in{torus_points(half, 51), {}};
