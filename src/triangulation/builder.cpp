@@ -606,14 +606,16 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
     Builder& b = worker(w);
     b.in_region_ = false;
     b.locking_ = false;
-    if (!locking && w + 1 < k) {
-      if (b.region_next_ < b.region_end_) {
-        cells[b.region_next_].n[0] = t_.free_head_;
-        t_.free_head_ = b.region_end_ - 1;
-        t_.free_count_ += b.region_end_ - b.region_next_;
+    if (!locking) {  // (with locks, done above)
+      if (w + 1 < k) {
+        if (b.region_next_ < b.region_end_) {
+          cells[b.region_next_].n[0] = t_.free_head_;
+          t_.free_head_ = b.region_end_ - 1;
+          t_.free_count_ += b.region_end_ - b.region_next_;
+        }
+      } else {
+        cells.resize(b.region_next_);
       }
-    } else if (!locking) {
-      cells.resize(b.region_next_);
     }
     deferred.insert(deferred.end(), lists[w].begin(),
                     lists[w].begin() + static_cast<std::ptrdiff_t>(from[w]));
