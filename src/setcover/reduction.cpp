@@ -65,6 +65,34 @@ class Presolver {
     sign(col_sig_, col_alive_, row_alive_, [&](std::int32_t j) { return inst_.column(j); });
     sign(row_sig_, row_alive_, col_alive_, [&](std::int32_t i) { return inst_.row(i); });
   }
+  /// The first alive member of `list` whose alive count is least (−1 if none is alive),
+  /// with a conditional move per member rather than a branch.
+  static std::int32_t shortest_alive(std::span<const std::int32_t> list,
+                                     const std::vector<char>& alive,
+                                     const std::vector<std::int32_t>& len) {
+    std::int32_t pivot = -1;
+    std::int32_t least = std::numeric_limits<std::int32_t>::max();
+    for (const std::int32_t x : list) {
+      const bool better = (alive[x] != 0) & (len[x] < least);
+      pivot = better ? x : pivot;
+      least = better ? len[x] : least;
+    }
+    return pivot;
+  }
+  /// Whether a candidate (another item, alive) can contain the checked item's list: at
+  /// least as long, no costlier, not tied with it on both where `loses_tie`, and its
+  /// signature `big` covering `small`. Evaluated without short-circuit: the candidates'
+  /// outcomes are hard to predict (10^6 torus samples: 0.66 million of the 20.6 million
+  /// candidates that reach the signature test pass it), so one branch on the whole instead
+  /// of one per test. One thread, 500,000 torus samples, 2 simultaneous pinned pairs with
+  /// the cores swapped: reduction 0.78 / 0.64 s -> 0.71 / 0.58 s, the same output.
+  static bool candidate_passes(bool other, bool alive, std::int32_t len, std::int32_t checked_len,
+                               double cost, double checked_cost, bool loses_tie,
+                               std::uint64_t small, std::uint64_t big) {
+    const bool tie = (len == checked_len) & (cost == checked_cost) & loses_tie;
+    return other & alive & (len >= checked_len) & (cost <= checked_cost) & !tie &
+           ((small & ~big) == 0);
+  }
   static std::uint64_t bit(std::int32_t x) {
     return std::uint64_t{1} << ((static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ULL) >> 58);
   }
@@ -123,17 +151,20 @@ class Presolver {
     return run_pass(
         inst_.num_cols(), [&](std::int32_t j) { return col_alive_[j] != 0; },
         [&](std::int32_t j, std::vector<std::int32_t>& mark, std::vector<std::int32_t>& kills) {
-          std::int32_t pivot = -1;
-          for (std::int32_t i : inst_.column(j)) {
-            if (row_alive_[i] && (pivot < 0 || row_len_[i] < row_len_[pivot])) pivot = i;
-          }
+          const std::int32_t pivot = shortest_alive(inst_.column(j), row_alive_, row_len_);
           for (std::int32_t i : inst_.column(j)) mark[i] = row_alive_[i];
           std::int64_t work = 3 * static_cast<std::int64_t>(inst_.column(j).size()) +
                               static_cast<std::int64_t>(inst_.row(pivot).size());
+          const std::int32_t len = col_len_[j];
+          const double cost = inst_.cost(j);
+          const std::uint64_t sig = col_sig_[j];
           for (std::int32_t k : inst_.row(pivot)) {
-            if (k == j || !col_alive_[k] || col_len_[k] < col_len_[j] || inst_.cost(k) > inst_.cost(j)) continue;
-            if (col_len_[k] == col_len_[j] && inst_.cost(k) == inst_.cost(j) && k > j) continue;
-            if ((col_sig_[j] & ~col_sig_[k]) != 0) continue;
+            // All the cheap tests at once, without a branch each: few candidates pass
+            // (see candidate_passes).
+            if (!candidate_passes(k != j, col_alive_[k] != 0, col_len_[k], len, inst_.cost(k),
+                                  cost, k > j, sig, col_sig_[k])) {
+              continue;
+            }
             work += static_cast<std::int64_t>(inst_.column(k).size());
             std::int32_t hits = 0;
             for (std::int32_t i : inst_.column(k)) hits += mark[i];
@@ -161,17 +192,17 @@ class Presolver {
     return run_pass(
         inst_.num_rows(), [&](std::int32_t k) { return row_alive_[k] != 0; },
         [&](std::int32_t k, std::vector<std::int32_t>& mark, std::vector<std::int32_t>& kills) {
-          std::int32_t pivot = -1;
-          for (std::int32_t j : inst_.row(k)) {
-            if (col_alive_[j] && (pivot < 0 || col_len_[j] < col_len_[pivot])) pivot = j;
-          }
+          const std::int32_t pivot = shortest_alive(inst_.row(k), col_alive_, col_len_);
           for (std::int32_t j : inst_.row(k)) mark[j] = col_alive_[j];
           std::int64_t work = 3 * static_cast<std::int64_t>(inst_.row(k).size()) +
                               static_cast<std::int64_t>(inst_.column(pivot).size());
+          const std::int32_t len = row_len_[k];
+          const std::uint64_t sig = row_sig_[k];
           for (std::int32_t i : inst_.column(pivot)) {
-            if (i == k || !row_alive_[i] || row_len_[i] < row_len_[k]) continue;
-            if (row_len_[i] == row_len_[k] && i < k) continue;
-            if ((row_sig_[k] & ~row_sig_[i]) != 0) continue;
+            if (!candidate_passes(i != k, row_alive_[i] != 0, row_len_[i], len, 0.0, 0.0, i < k,
+                                  sig, row_sig_[i])) {
+              continue;
+            }
             work += static_cast<std::int64_t>(inst_.row(i).size());
             std::int32_t hits = 0;
             for (std::int32_t j : inst_.row(i)) hits += mark[j];
