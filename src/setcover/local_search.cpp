@@ -41,7 +41,9 @@ class RowWeighting {
     }
   }
 
-  void add(std::int32_t k) {
+  /// Adds column k. `touch`: configuration checking marks its neighbours addable, which a
+  /// (re)start's adds may skip: they start from every column addable and remove none.
+  void add(std::int32_t k, bool touch = true) {
     for (std::int32_t i : inst_.column(k)) {
       if (cover_[i] == 0) {
         for (std::int32_t l : inst_.row(i)) {
@@ -60,7 +62,7 @@ class RowWeighting {
     sol_pos_[k] = static_cast<std::int32_t>(sol_.size());
     sol_.push_back(k);
     cost_ += inst_.cost(k);
-    touch_neighbours(k);
+    if (touch) touch_neighbours(k);
   }
 
   void remove(std::int32_t j) {
@@ -105,8 +107,17 @@ class RowWeighting {
         if (j != tabu && (best < 0 || better(j, best))) best = j;
       }
     } else {
-      for (std::size_t t = 0; t < kSample; ++t) {
-        const std::int32_t j = sol_[rng_() % n];
+      // The sample drawn first and its columns' scores and stamps asked for before they
+      // are compared (they lie anywhere in arrays over all columns); the same draws and
+      // comparisons, in the same order. One thread, 5·10^5 torus samples, 2 pinned pairs:
+      // local search 0.150 / 0.154 -> 0.137 / 0.132 s.
+      std::int32_t sample[kSample];
+      for (std::size_t t = 0; t < kSample; ++t) sample[t] = sol_[rng_() % n];
+      for (const std::int32_t j : sample) {
+        __builtin_prefetch(&score_[j]);
+        __builtin_prefetch(&stamp_[j]);
+      }
+      for (const std::int32_t j : sample) {
         if (j != tabu && (best < 0 || better(j, best))) best = j;
       }
       if (best < 0) return pick_removal_scan(tabu, better);
@@ -232,11 +243,22 @@ LocalSearchResult row_weighting_search(const Instance& inst, const std::vector<s
   auto restart = [&](const std::vector<std::int32_t>& from) {
     state.emplace(inst, options.seed + 0x9e3779b97f4a7c15ULL * restarts++);
     for (std::int32_t j : from) {
-      if (!state->in_sol_[j]) state->add(j);
+      if (!state->in_sol_[j]) state->add(j, /*touch=*/false);
     }
   };
   restart(start);
   const double slack = inst.has_integer_costs() ? 0.5 : 1e-9 * std::max(1.0, std::abs(start_cost));
+  // With integer costs whose total is at most 2^53, every sum of some of them is an exact
+  // double: the running cost then equals the sum over the solution, and each cover found
+  // costs O(1) to price instead of O(solution). The sum had taken nine tenths of the local
+  // search: 50,000 columns after nearly every iteration on 5·10^5 torus samples (one
+  // thread, 2 pinned pairs, local search 0.55 / 0.57 -> 0.18 / 0.13 s, the same output).
+  const bool running_cost_exact = [&] {
+    if (!inst.has_integer_costs()) return false;
+    double total = 0.0;
+    for (const double c : inst.costs()) total += c;
+    return total <= 0x1p53;
+  }();
   std::int32_t tabu = -1;
   std::int64_t it = 0;
   const bool remove_first = inst.is_unicost();
@@ -244,7 +266,11 @@ LocalSearchResult row_weighting_search(const Instance& inst, const std::vector<s
   while (true) {
     RowWeighting& s = *state;
     if (s.uncovered_.empty()) {
-      const double c = s.exact_cost();
+      const double c = running_cost_exact ? s.cost_ : s.exact_cost();
+      if constexpr (check_level() >= 2) {
+        RSTRUCT_ASSERT_MSG(!running_cost_exact || c == s.exact_cost(),
+                           "local search: running cost out of sync");
+      }
       if (c < result.best_cost - slack || (result.best.empty() && c <= result.best_cost + slack)) {
         result.best = s.sol_;
         result.best_cost = c;
