@@ -130,6 +130,44 @@ TEST_CASE("lazy greedy takes the columns the plain greedy takes, on instances of
   }
 }
 
+TEST_CASE("unit-cost greedy: the bitset sets and the heaps both take the plain greedy's columns") {
+  // Unit costs take one of two queues by count μ: a bitset of columns per count, or, where
+  // those sets would take more than four times the matrix's memory (a few columns far
+  // larger than the rest: many counts, many columns, few entries), a heap per count.
+  // Instances of both kinds, with many equal counts (ties to the smallest index).
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    INFO("seed " << seed);
+    std::mt19937_64 rng(seed);
+    const bool wide = seed % 2 == 0;  // large columns: the heaps
+    const auto rows = static_cast<std::int32_t>(2000 + rng() % 2000);
+    std::vector<std::vector<std::int32_t>> columns;
+    for (int k = 0; k < 3000; ++k) {
+      std::vector<std::int32_t> c;
+      const auto centre = static_cast<std::int32_t>(rng() % static_cast<std::uint64_t>(rows));
+      for (std::uint64_t t = 0, size = 1 + rng() % 4; t < size; ++t) {
+        c.push_back(std::clamp<std::int32_t>(centre + static_cast<std::int32_t>(rng() % 9) - 4, 0, rows - 1));
+      }
+      columns.push_back(c);
+    }
+    for (int k = 0; wide && k < 6; ++k) {  // overlapping stretches of 300 to 1,500 rows
+      const auto first = static_cast<std::int32_t>(rng() % static_cast<std::uint64_t>(rows));
+      const auto length = static_cast<std::int32_t>(300 + rng() % 1200);
+      std::vector<std::int32_t> c;
+      for (std::int32_t i = first; i < std::min(rows, first + length); ++i) c.push_back(i);
+      columns.insert(columns.begin() + static_cast<std::ptrdiff_t>(rng() % columns.size()), c);
+    }
+    for (std::int32_t i = 0; i < rows; ++i) columns[static_cast<std::size_t>(rng() % columns.size())].push_back(i);
+    const Instance inst = Instance::from_columns(rows, columns);
+    std::int64_t top = 0;
+    for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
+      top = std::max<std::int64_t>(top, static_cast<std::int64_t>(inst.column(j).size()));
+    }
+    const std::int64_t bitset_bytes = (top + 1) * ((inst.num_cols() + 63) / 64) * 8;
+    CHECK((bitset_bytes > 16 * inst.num_entries()) == wide);  // the kind of queue intended
+    CHECK(rstruct::setcover::detail::greedy_cover(inst, {}, {}, {}) == naive_greedy(inst, {}, {}, {}));
+  }
+}
+
 TEST_CASE("greedy refuses a negative multiplier") {
   // γ would then fall as rows get covered, and the lazy queue could take a column that is
   // no longer first.
