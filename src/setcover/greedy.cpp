@@ -89,7 +89,8 @@ std::vector<std::int32_t> greedy_cover(const Instance& inst, std::span<const dou
       gamma[j] = g;
     }
   }
-  auto take = [&](std::int32_t j) {
+  // Takes column j; `falls(k)` sees each column k whose count is about to fall by one.
+  const auto take_and = [&](std::int32_t j, auto&& falls) {
     chosen.push_back(j);
     for (std::int32_t i : inst.column(j)) {
       if (!covered[i]) {
@@ -102,11 +103,15 @@ std::vector<std::int32_t> greedy_cover(const Instance& inst, std::span<const dou
             gamma[k] += ui;
           }
         } else {
-          for (std::int32_t k : inst.row(i)) --mu[k];
+          for (std::int32_t k : inst.row(i)) {
+            falls(k);
+            --mu[k];
+          }
         }
       }
     }
   };
+  const auto take = [&](std::int32_t j) { take_and(j, [](std::int32_t) {}); };
   for (std::int32_t j : start) take(j);
   std::int32_t top = weighted ? -1 : largest_count_if_equal_costs(inst, allowed, mu);
   const auto words = static_cast<std::size_t>((inst.num_cols() + 63) / 64);
@@ -151,23 +156,15 @@ std::vector<std::int32_t> greedy_cover(const Instance& inst, std::span<const dou
       const auto j = static_cast<std::int32_t>(w * 64 + static_cast<std::size_t>(__builtin_ctzll(set[w])));
       erase(top, j);
       queued[j] = 0;
-      chosen.push_back(j);
-      for (std::int32_t i : inst.column(j)) {
-        if (covered[i]) continue;
-        covered[i] = 1;
-        --uncovered;
-        for (std::int32_t k : inst.row(i)) {
-          if (queued[k]) {
-            erase(mu[k], k);
-            if (mu[k] > 1) {
-              insert(mu[k] - 1, k);
-            } else {
-              queued[k] = 0;
-            }
-          }
-          --mu[k];
+      take_and(j, [&](std::int32_t k) {
+        if (!queued[k]) return;
+        erase(mu[k], k);
+        if (mu[k] > 1) {
+          insert(mu[k] - 1, k);
+        } else {
+          queued[k] = 0;
         }
-      }
+      });
     }
     remove_redundant(inst, chosen);
     return chosen;
