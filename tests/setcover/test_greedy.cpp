@@ -96,7 +96,13 @@ TEST_CASE("lazy greedy takes the columns the plain greedy takes") {
       RC_PRE(std::all_of(covered.begin(), covered.end(), [](char c) { return c != 0; }));
     }
     const auto lazy = rstruct::setcover::detail::greedy_cover(inst, u, allowed, start);
-    RC_ASSERT(lazy == naive_greedy(inst, u, allowed, start));
+    const auto naive = naive_greedy(inst, u, allowed, start);
+    RC_ASSERT(lazy == naive);
+    if (!u.empty()) {
+      // Columns queued a few at a time: the batches must not change the columns taken.
+      const auto batch = static_cast<std::size_t>(*rc::gen::inRange(1, 4));
+      RC_ASSERT(rstruct::setcover::detail::lagrangian_greedy(inst, u, allowed, start, batch) == naive);
+    }
   });
 }
 
@@ -123,10 +129,19 @@ TEST_CASE("lazy greedy takes the columns the plain greedy takes, on instances of
     }
     for (std::int32_t i = 0; i < rows; ++i) columns[static_cast<std::size_t>(rng() % columns.size())].push_back(i);
     const Instance inst = Instance::from_columns(rows, columns, costs);
+    // Multipliers on every other seed: then the columns are queued in batches of 256 or
+    // more (lagrangian_greedy), several batches on these instances.
     std::vector<double> u;
-    for (std::int32_t i = 0; seed % 4 == 0 && i < rows; ++i) u.push_back(0.25 * static_cast<double>(rng() % 8));
+    for (std::int32_t i = 0; seed % 2 == 0 && i < rows; ++i) u.push_back(0.25 * static_cast<double>(rng() % 8));
     const auto lazy = rstruct::setcover::detail::greedy_cover(inst, u, {}, {});
-    CHECK(lazy == naive_greedy(inst, u, {}, {}));
+    const auto naive = naive_greedy(inst, u, {}, {});
+    CHECK(lazy == naive);
+    if (!u.empty()) {
+      for (const std::size_t batch : {1, 7, 40}) {
+        INFO("batches of " << batch);
+        CHECK(rstruct::setcover::detail::lagrangian_greedy(inst, u, {}, {}, batch) == naive);
+      }
+    }
   }
 }
 
