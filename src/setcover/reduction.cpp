@@ -38,13 +38,17 @@ class Presolver {
     for (std::int32_t j = 0; j < inst.num_cols(); ++j) col_len_[j] = static_cast<std::int32_t>(inst.column(j).size());
   }
 
-  /// 64-bit Bloom signatures of the alive columns of every row and alive rows of every
-  /// column, for a cheap "cannot be a subset" test. Sets only shrink during a pass, so a
-  /// signature taken at the pass start over-approximates: it can hide a domination (less
-  /// reduction) but never fake one (the exact count below decides).
-  /// Rows and columns each on their own (both from the instance's two lists), so that
-  /// the two loops run on all threads without sharing a word.
-  void take_signatures() {
+  /// 64-bit Bloom signatures of the alive columns of every row (`rows`) or of the alive
+  /// rows of every column (otherwise), for a cheap "cannot be a subset" test. Sets only
+  /// shrink during a pass, so a signature taken at the pass start over-approximates: it can
+  /// hide a domination (less reduction) but never fake one (the exact count below decides).
+  /// Each item on its own (from the instance's lists), so that the loop runs on all
+  /// threads without sharing a word. Only the kind the next pass reads (both were taken
+  /// before each pass, 4 × 0.06 s of the 10^6-sample torus level's reduction on two
+  /// threads): 5·10^5 torus samples, one thread, 6 simultaneous pinned pairs with the cores
+  /// swapped, reduction 0.560-0.582 s (median 0.569) -> 0.495-0.566 s (median 0.512), the
+  /// same output.
+  void take_signatures(bool rows) {
     // sig[x] = the bits of the alive members of item x's list (0 for a dead item).
     const auto sign = [&](std::vector<std::uint64_t>& sig, const std::vector<char>& alive,
                           const std::vector<char>& member_alive, auto&& list) {
@@ -62,8 +66,11 @@ class Presolver {
                         }
                       });
     };
-    sign(col_sig_, col_alive_, row_alive_, [&](std::int32_t j) { return inst_.column(j); });
-    sign(row_sig_, row_alive_, col_alive_, [&](std::int32_t i) { return inst_.row(i); });
+    if (rows) {
+      sign(row_sig_, row_alive_, col_alive_, [&](std::int32_t i) { return inst_.row(i); });
+    } else {
+      sign(col_sig_, col_alive_, row_alive_, [&](std::int32_t j) { return inst_.column(j); });
+    }
   }
   /// The first alive member of `list` whose alive count is least (−1 if none is alive),
   /// with a conditional move per member rather than a branch.
@@ -432,9 +439,9 @@ Reduction reduce(const Instance& inst, bool use_domination, double deadline, con
   p.force_singletons();
   // Domination passes are the expensive part: two rounds catch nearly everything.
   for (int pass = 0; use_domination && pass < 2 && !p.out_of_time() && !p.out_of_work(); ++pass) {
-    p.take_signatures();
+    p.take_signatures(true);
     bool changed = p.remove_dominated_rows();
-    p.take_signatures();
+    p.take_signatures(false);
     changed = p.remove_dominated_cols() || changed;
     changed = p.force_singletons() || changed;
     if (!changed) break;
