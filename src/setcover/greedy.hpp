@@ -24,7 +24,7 @@ std::vector<std::int32_t> greedy_cover(const Instance& inst, std::span<const dou
                                        std::span<const std::int32_t> start = {});
 
 /// greedy_cover with multipliers (u not empty), the allowed columns queued in batches in
-/// the order of their first scores, `least_batch` at a time (at least one). The batches
+/// the order of their first scores, `batch` at a time (at least one). The batches
 /// change how fast it runs, never the columns it takes: greedy_cover queues a sixteenth of
 /// the columns, or 256, at a time; the tests fewer.
 std::vector<std::int32_t> lagrangian_greedy(const Instance& inst, std::span<const double> u,
