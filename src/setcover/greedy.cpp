@@ -30,6 +30,74 @@ std::int32_t largest_count_if_equal_costs(const Instance& inst, std::span<const 
   return top;
 }
 
+/// Takes columns in (score, index) order, lazily, until `uncovered()` is 0: the candidates
+/// are the allowed columns (all when `allowed` is empty) of the `columns` that cover some
+/// row; `mu(j)` is column j's count of uncovered rows now, `score(j)` its candidate now
+/// (col −1 if it covers nothing more), and take(j) takes it. A queued candidate whose
+/// count has not changed is current; one that has is rescored when it comes first, and
+/// taken if it still is. Scores only grow as rows get covered, so the column taken is
+/// always the first of all. The candidates enter the queue `batch` at a time in the order
+/// of their first scores (all at once, unsorted, when the batch holds them all): one not
+/// yet queued scores at least the first score of the next batch, `next`, so a column is
+/// taken only if it comes before that. Used by greedy_cover (one batch) and
+/// lagrangian_greedy (batches).
+template <class Mu, class Score, class Take, class Uncovered>
+void take_in_score_order(std::int32_t columns, std::span<const char> allowed, std::size_t batch,
+                         Mu&& mu, Score&& score, Take&& take, Uncovered&& uncovered) {
+  std::vector<Candidate> waiting;
+  for (std::int32_t j = 0; j < columns; ++j) {
+    if (!allowed.empty() && !allowed[j]) continue;
+    const Candidate c = score(j);
+    if (c.col >= 0) waiting.push_back(c);
+  }
+  batch = std::max<std::size_t>(1, batch);
+  if (batch < waiting.size()) {
+    std::sort(waiting.begin(), waiting.end(),
+              [](const Candidate& a, const Candidate& b) { return b > a; });
+  }
+  constexpr Candidate kNone{HUGE_VAL, std::numeric_limits<std::int32_t>::max(), 0};
+  CandidateHeap heap;
+  heap.reserve(std::min(waiting.size(), batch));
+  std::size_t fed = 0;
+  Candidate next = kNone;
+  const auto feed = [&] {
+    const std::size_t end = fed + std::min(batch, waiting.size() - fed);
+    for (; fed < end; ++fed) {
+      const Candidate& c = waiting[fed];
+      const Candidate now = mu(c.col) == c.mu ? c : score(c.col);
+      if (now.col >= 0) heap.push(now);
+    }
+    next = fed < waiting.size() ? waiting[fed] : kNone;
+  };
+  feed();
+  while (uncovered() > 0) {
+    if (fed < waiting.size() && (heap.empty() || !(next > heap.top()))) {
+      feed();
+      continue;
+    }
+    RSTRUCT_ASSERT_MSG(!heap.empty(), "greedy: allowed columns do not cover every row");
+    const Candidate top = heap.top();
+    if (mu(top.col) == top.mu) {  // nothing changed since it was scored
+      heap.pop();
+      take(top.col);
+      continue;
+    }
+    const Candidate fresh = score(top.col);
+    if (fresh.col < 0) {
+      heap.pop();
+      continue;
+    }
+    // Stale and no longer the first, or not before the next batch (which is queued
+    // before it is taken): re-queued with its true score.
+    if ((fresh.score > top.score && heap.size() > 1 && fresh > heap.second()) || !(next > fresh)) {
+      heap.replace_top(fresh);
+      continue;
+    }
+    heap.pop();
+    take(top.col);
+  }
+}
+
 }  // namespace
 
 // The greedy with multipliers u (CFT's Lagrangian greedy); see greedy_cover.
@@ -94,57 +162,9 @@ std::vector<std::int32_t> lagrangian_greedy(const Instance& inst, std::span<cons
     if (c.mu == 0) return Candidate{0.0, -1, 0};
     return Candidate{c.gamma > 0 ? c.gamma / c.mu : c.gamma * c.mu, j, c.mu};
   };
-  // The allowed columns in (first score, index) order, queued in batches from `fed` on;
-  // `next` is the first not queued (+inf once all are).
-  std::vector<Candidate> waiting;
-  for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
-    if (!allowed.empty() && !allowed[j]) continue;
-    const Candidate c = score(j);
-    if (c.col >= 0) waiting.push_back(c);
-  }
-  std::sort(waiting.begin(), waiting.end(),
-            [](const Candidate& a, const Candidate& b) { return b > a; });
-  constexpr Candidate kNone{HUGE_VAL, std::numeric_limits<std::int32_t>::max(), 0};
-  batch = std::max<std::size_t>(1, batch);
-  CandidateHeap heap;
-  std::size_t fed = 0;
-  Candidate next = kNone;
-  const auto feed = [&] {
-    const std::size_t end = std::min(waiting.size(), fed + batch);
-    for (; fed < end; ++fed) {
-      const Candidate& c = waiting[fed];
-      const Candidate now = col[c.col].mu == c.mu ? c : score(c.col);
-      if (now.col >= 0) heap.push(now);
-    }
-    next = fed < waiting.size() ? waiting[fed] : kNone;
-  };
-  feed();
-  while (uncovered > 0) {
-    if (fed < waiting.size() && (heap.empty() || !(next > heap.top()))) {
-      feed();
-      continue;
-    }
-    RSTRUCT_ASSERT_MSG(!heap.empty(), "greedy: allowed columns do not cover every row");
-    const Candidate top = heap.top();
-    if (col[top.col].mu == top.mu) {  // nothing changed since it was scored
-      heap.pop();
-      take(top.col);
-      continue;
-    }
-    const Candidate fresh = score(top.col);
-    if (fresh.col < 0) {
-      heap.pop();
-      continue;
-    }
-    // Re-queued with its true score if it is no longer the first, or not before the next
-    // batch (which is queued before it is taken).
-    if ((fresh.score > top.score && heap.size() > 1 && fresh > heap.second()) || !(next > fresh)) {
-      heap.replace_top(fresh);
-      continue;
-    }
-    heap.pop();
-    take(top.col);
-  }
+  take_in_score_order(
+      inst.num_cols(), allowed, batch, [&](std::int32_t j) { return col[j].mu; }, score, take,
+      [&] { return uncovered; });
   remove_redundant(inst, chosen);
   return chosen;
 }
@@ -292,33 +312,10 @@ std::vector<std::int32_t> greedy_cover(const Instance& inst, std::span<const dou
     if (mu[j] == 0) return Candidate{0.0, -1, 0};
     return Candidate{inst.cost(j) / mu[j], j, mu[j]};
   };
-  CandidateHeap heap;
-  heap.reserve(static_cast<std::size_t>(inst.num_cols()));
-  for (std::int32_t j = 0; j < inst.num_cols(); ++j) {
-    if (!allowed.empty() && !allowed[j]) continue;
-    const Candidate c = score(j);
-    if (c.col >= 0) heap.push(c);
-  }
-  while (uncovered > 0) {
-    RSTRUCT_ASSERT_MSG(!heap.empty(), "greedy: allowed columns do not cover every row");
-    const Candidate top = heap.top();
-    if (mu[top.col] == top.mu) {  // nothing changed since it was scored
-      heap.pop();
-      take(top.col);
-      continue;
-    }
-    const Candidate fresh = score(top.col);
-    if (fresh.col < 0) {
-      heap.pop();
-      continue;
-    }
-    if (fresh.score > top.score && heap.size() > 1 && fresh > heap.second()) {
-      heap.replace_top(fresh);  // stale and no longer the best: re-queued with its true score
-      continue;
-    }
-    heap.pop();
-    take(top.col);
-  }
+  // One batch: every candidate queued at once.
+  take_in_score_order(
+      inst.num_cols(), allowed, std::numeric_limits<std::size_t>::max(),
+      [&](std::int32_t j) { return mu[j]; }, score, take, [&] { return uncovered; });
   remove_redundant(inst, chosen);
   return chosen;
 }
