@@ -1,6 +1,7 @@
 #include "point_tree.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -71,6 +72,112 @@ double box_bound(const Box& box, const double* q) {
     gap[d] = q[d] < box.lo[d] ? box.lo[d] - q[d] : q[d] > box.hi[d] ? q[d] - box.hi[d] : 0.0;
   }
   return (gap[0] * gap[0] + gap[1] * gap[1]) + gap[2] * gap[2];
+}
+
+/// Coordinates up to this magnitude (and queries') keep a capsule's squares and products
+/// far from overflow; a leaf with larger ones gets no capsule bound.
+constexpr double kCapsuleRange = 0x1p400;
+
+/// Subtrees of at most this many slots get a capsule (larger ones span curved stretches of
+/// an axis, where a capsule bounds little, and would cost a pass over their points at
+/// every level).
+constexpr std::uint32_t kCapsulePoints = 4096;
+
+/// The capsule of the points in slots [first, last) (padding skipped; see
+/// PointTree::Capsule): the segment through their centroid c along the direction between
+/// two far-apart points (the farthest from c, and the farthest from that one), from the
+/// least to the largest of their parameters t = fl((p − c)·u), and r the largest computed
+/// distance from a point p to c + t·u. Floating point; capsule_bound() allows for the
+/// rounding of all of it.
+template <class Capsule>
+Capsule capsule_of(const double* x, const double* y, const double* z, const std::uint32_t* index,
+                   std::uint32_t first, std::uint32_t last) {
+  Capsule k;
+  double sum[3] = {0, 0, 0};
+  double n = 0;
+  for (std::uint32_t s = first; s < last; ++s) {
+    if (index[s] == kNoIndex) continue;
+    const double p[3] = {x[s], y[s], z[s]};
+    for (std::size_t d = 0; d < 3; ++d) {
+      if (!(std::fabs(p[d]) <= kCapsuleRange)) {
+        k.r = HUGE_VAL;
+        return k;
+      }
+      sum[d] += p[d];
+    }
+    n += 1;
+  }
+  if (n == 0) {
+    k.r = HUGE_VAL;
+    return k;
+  }
+  for (std::size_t d = 0; d < 3; ++d) k.c[d] = sum[d] / n;
+  const auto farthest_from = [&](const double* o, double* out) {
+    double best_d2 = -1;
+    for (std::uint32_t s = first; s < last; ++s) {
+      if (index[s] == kNoIndex) continue;
+      const double dx = x[s] - o[0], dy = y[s] - o[1], dz = z[s] - o[2];
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      if (d2 > best_d2) {
+        best_d2 = d2;
+        out[0] = x[s];
+        out[1] = y[s];
+        out[2] = z[s];
+      }
+    }
+  };
+  double a[3] = {k.c[0], k.c[1], k.c[2]};
+  double b[3] = {k.c[0], k.c[1], k.c[2]};
+  farthest_from(k.c, a);
+  farthest_from(a, b);
+  const double w[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double length = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+  if (length > 0 && std::isfinite(length)) {
+    for (std::size_t d = 0; d < 3; ++d) k.u[d] = w[d] / length;
+  }
+  k.t0 = HUGE_VAL;
+  k.t1 = -HUGE_VAL;
+  double r2 = 0;
+  for (std::uint32_t s = first; s < last; ++s) {
+    if (index[s] == kNoIndex) continue;
+    const double v[3] = {x[s] - k.c[0], y[s] - k.c[1], z[s] - k.c[2]};
+    const double t = v[0] * k.u[0] + v[1] * k.u[1] + v[2] * k.u[2];
+    k.t0 = std::min(k.t0, t);
+    k.t1 = std::max(k.t1, t);
+    const double e[3] = {v[0] - t * k.u[0], v[1] - t * k.u[1], v[2] - t * k.u[2]};
+    r2 = std::max(r2, e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+  }
+  k.r = std::sqrt(r2);
+  k.scale = std::max(std::fabs(k.t0), std::fabs(k.t1)) + k.r;
+  if (!std::isfinite(k.scale)) k.r = HUGE_VAL;
+  return k;
+}
+
+/// A lower bound on the squared distances, as scans compute them, from q to the points of
+/// a node with capsule k, or 0. For a point p of the node, s_p = c + t_p·u (t_p as
+/// capsule_of computed it, in [t0, t1]) lies on the segment and |p − s_p| ≤ r up to the
+/// rounding of r, so |q − p| ≥ dist(q, segment) − r. The distance computed here, from q to
+/// c + clamp(fl((q − c)·u))·u, exceeds dist(q, segment) by second-order terms only. Every
+/// rounded operation (differences from c, products with u, sums of squares, square roots)
+/// errs by at most 2⁻⁵³ of its result, so the errors of r and of that distance stay within
+/// a few hundred units of 2⁻⁵³ of |q − c| + max(|t0|, |t1|) + r (the magnitudes of every
+/// intermediate), and below 2⁻⁵⁰⁰ where squares underflow: the margin of 2⁻⁴⁰ of that sum
+/// plus 2⁻⁵⁰⁰ covers them. (Coordinates up to kCapsuleRange: nothing overflows.) The bound,
+/// squared, then stands against the points' computed squared distances as the box bound
+/// does (skippable() allows a relative 2⁻⁴⁰ for the rounding of both).
+template <class Capsule>
+double capsule_bound(const Capsule& k, const double* q) {
+  if (k.r == HUGE_VAL) return 0.0;
+  if (!(std::max({std::fabs(q[0]), std::fabs(q[1]), std::fabs(q[2])}) <= kCapsuleRange)) {
+    return 0.0;
+  }
+  const double v[3] = {q[0] - k.c[0], q[1] - k.c[1], q[2] - k.c[2]};
+  const double t = std::clamp(v[0] * k.u[0] + v[1] * k.u[1] + v[2] * k.u[2], k.t0, k.t1);
+  const double e[3] = {v[0] - t * k.u[0], v[1] - t * k.u[1], v[2] - t * k.u[2]};
+  const double distance = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+  const double magnitude = std::fabs(v[0]) + std::fabs(v[1]) + std::fabs(v[2]) + k.scale;
+  const double bound = distance - k.r - (0x1p-40 * magnitude + 0x1p-500);
+  return bound > 0 ? bound * bound : 0.0;
 }
 
 Box3 box_of(const std::uint32_t* first, const std::uint32_t* last, std::span<const Point3> points) {
@@ -145,6 +252,26 @@ PointTree::PointTree(std::span<const Point3> points, std::uint32_t leaf_size, Sc
       }
       node.first = slot[l];
       node.last = at;
+    }
+  });
+  // Each node's slots: a subtree's nodes, and so its leaves' slots, are contiguous (the
+  // build appends a node's lower subtree, then its upper one), and children follow their
+  // parent.
+  std::vector<std::array<std::uint32_t, 2>> span(nodes_.size());
+  for (std::size_t k = nodes_.size(); k-- > 0;) {
+    const Node& node = nodes_[k];
+    span[k] = node.leaf ? std::array<std::uint32_t, 2>{node.first, node.last}
+                        : std::array<std::uint32_t, 2>{span[node.first][0], span[node.last][1]};
+  }
+  capsules_.resize(nodes_.size());
+  parallel_chunks(nodes_.size(), workers, 256, [&](std::size_t begin, std::size_t end, unsigned) {
+    for (std::size_t k = begin; k < end; ++k) {
+      if (span[k][1] - span[k][0] > kCapsulePoints) {
+        capsules_[k].r = HUGE_VAL;
+        continue;
+      }
+      capsules_[k] = capsule_of<Capsule>(x_.get(), y_.get(), z_.get(), index_.get(), span[k][0],
+                                         span[k][1]);
     }
   });
 }
@@ -250,7 +377,7 @@ std::uint32_t PointTree::nearest_from(const Point3& q, std::uint32_t index,
   Best best{squared_distance, index};
   if (nodes_.empty()) return index;
   const double query[3] = {q.x, q.y, q.z};
-  if (!skippable(box_bound(nodes_[0], query), best.d2)) search(0, query, best);
+  if (!can_skip(0, box_bound(nodes_[0], query), query, best)) search(0, query, best);
   return best.index;
 }
 
@@ -275,8 +402,12 @@ void PointTree::search(std::uint32_t id, const double* q, Best& best) const {
   const bool lower_first = b0 <= b1;
   const std::uint32_t near = lower_first ? node.first : node.last;
   const std::uint32_t far = lower_first ? node.last : node.first;
-  if (!skippable(lower_first ? b0 : b1, best.d2)) search(near, q, best);
-  if (!skippable(lower_first ? b1 : b0, best.d2)) search(far, q, best);
+  if (!can_skip(near, lower_first ? b0 : b1, q, best)) search(near, q, best);
+  if (!can_skip(far, lower_first ? b1 : b0, q, best)) search(far, q, best);
+}
+
+bool PointTree::can_skip(std::uint32_t id, double box, const double* q, const Best& best) const {
+  return skippable(box, best.d2) || skippable(capsule_bound(capsules_[id], q), best.d2);
 }
 
 void PointTree::scan_leaf(const Node& node, const double* q, Best& best) const {

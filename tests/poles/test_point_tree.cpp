@@ -75,7 +75,7 @@ void check_candidates(const PointTree& tree, std::span<const Point3> points, con
   RC_ASSERT(at == found.size());  // no index out of range
 }
 
-enum class Shape { uniform, clustered, grid, line, duplicates };
+enum class Shape { uniform, clustered, grid, line, duplicates, circle };
 
 std::vector<Point3> make_points(Shape shape, std::size_t n, double scale, double offset,
                                 std::mt19937_64& rng) {
@@ -108,6 +108,16 @@ std::vector<Point3> make_points(Shape shape, std::size_t n, double scale, double
         p = {double(g(rng)), 0.5 * double(g(rng)), 0.0};
         break;
       }
+      case Shape::circle: {
+        // As the inner poles of a torus crowd its core circle: a relative spread of 10^-9
+        // (many near ties for a query off the circle), every third point exactly on it
+        // (as exactly as rounding allows).
+        const double angle = 3.14159265358979 * u(rng);
+        const double spread = i % 3 == 0 ? 0.0 : 1e-9;
+        const double radius = 1.0 + spread * u(rng);
+        p = {radius * std::cos(angle), radius * std::sin(angle), spread * u(rng)};
+        break;
+      }
     }
     points.push_back({offset + scale * p.x, offset + scale * p.y, scale * p.z});
   }
@@ -130,7 +140,7 @@ struct DrawnCase {
 DrawnCase draw_case(std::size_t query_count) {
   const auto seed = *rc::gen::arbitrary<std::uint64_t>();
   const auto shape = *rc::gen::element(Shape::uniform, Shape::clustered, Shape::grid, Shape::line,
-                                       Shape::duplicates);
+                                       Shape::duplicates, Shape::circle);
   const auto n = *rc::gen::inRange<std::size_t>(1, 700);
   DrawnCase c;
   c.rng.seed(seed);
@@ -144,6 +154,16 @@ DrawnCase draw_case(std::size_t query_count) {
   c.queries = make_points(shape, query_count, c.scale, offset, c.rng);
   if (shape == Shape::grid) {
     for (Point3& q : c.queries) q = {q.x + 0.5 * c.scale, q.y + 0.5 * c.scale, q.z};
+  }
+  if (shape == Shape::circle) {
+    // Off the circle, as samples of a torus lie off its core circle: a quarter on its
+    // axis (every point of the circle nearly a tie), the rest at distance about 0.7.
+    for (std::size_t k = 0; k < c.queries.size(); ++k) {
+      Point3& q = c.queries[k];
+      q = k % 4 == 0 ? Point3{offset, offset, 0.4 * c.scale}
+                     : Point3{offset + 1.5 * (q.x - offset), offset + 1.5 * (q.y - offset),
+                              q.z + 0.6 * c.scale};
+    }
   }
   for (std::size_t k = 0; k < 5; ++k) c.queries.push_back(c.points[(k * 37) % n]);
   c.queries.push_back({offset + 1e3 * c.scale, -1e3 * c.scale, 7 * c.scale});
