@@ -109,7 +109,8 @@ CoveringSets covering_sets(std::span<const Ball> balls, std::span<const Point3> 
   // s; leaves of 128 or 256 points instead of 64 were no faster.
   const unsigned t = thread_count(threads, balls.size());
   const detail::PointTree tree(points, detail::PointTree::kDefaultLeafSize,
-                               detail::PointTree::Scan::best, t);
+                               detail::PointTree::Scan::best, t,
+                               detail::PointTree::Bounds::boxes);
   // Columns in Morton order of their centres, so that consecutive searches stay local;
   // the result is assembled in column order afterwards.
   std::vector<Point3> centres(balls.size());

@@ -85,16 +85,20 @@ constexpr std::uint32_t kCapsulePoints = 4096;
 
 /// The capsule of the points in slots [first, last) (padding skipped; see
 /// PointTree::Capsule): the segment through their centroid c along the direction between
-/// two far-apart points (the farthest from c, and the farthest from that one), from the
-/// least to the largest of their parameters t = fl((p − c)·u), and r the largest computed
-/// distance from a point p to c + t·u. Floating point; capsule_bound() allows for the
-/// rounding of all of it.
+/// their extreme points on `axis` (the widest side of their box), from the least to the
+/// largest of their parameters t = fl((p − c)·u), and r the largest computed distance from
+/// a point p to c + t·u. Floating point; capsule_bound() allows for the rounding of all of
+/// it. (Two passes over the points; the direction between the farthest point from c and
+/// the farthest from that one, two passes more, made the pole tree's build 0.08 s slower
+/// on a 10^6-sample torus for no fewer leaves scanned.)
 template <class Capsule>
 Capsule capsule_of(const double* x, const double* y, const double* z, const std::uint32_t* index,
-                   std::uint32_t first, std::uint32_t last) {
+                   std::uint32_t first, std::uint32_t last, std::size_t axis) {
   Capsule k;
+  const double* along = axis == 0 ? x : axis == 1 ? y : z;
   double sum[3] = {0, 0, 0};
   double n = 0;
+  std::uint32_t low = first, high = first;
   for (std::uint32_t s = first; s < last; ++s) {
     if (index[s] == kNoIndex) continue;
     const double p[3] = {x[s], y[s], z[s]};
@@ -105,6 +109,8 @@ Capsule capsule_of(const double* x, const double* y, const double* z, const std:
       }
       sum[d] += p[d];
     }
+    if (n == 0 || along[s] < along[low]) low = s;
+    if (n == 0 || along[s] > along[high]) high = s;
     n += 1;
   }
   if (n == 0) {
@@ -112,25 +118,7 @@ Capsule capsule_of(const double* x, const double* y, const double* z, const std:
     return k;
   }
   for (std::size_t d = 0; d < 3; ++d) k.c[d] = sum[d] / n;
-  const auto farthest_from = [&](const double* o, double* out) {
-    double best_d2 = -1;
-    for (std::uint32_t s = first; s < last; ++s) {
-      if (index[s] == kNoIndex) continue;
-      const double dx = x[s] - o[0], dy = y[s] - o[1], dz = z[s] - o[2];
-      const double d2 = dx * dx + dy * dy + dz * dz;
-      if (d2 > best_d2) {
-        best_d2 = d2;
-        out[0] = x[s];
-        out[1] = y[s];
-        out[2] = z[s];
-      }
-    }
-  };
-  double a[3] = {k.c[0], k.c[1], k.c[2]};
-  double b[3] = {k.c[0], k.c[1], k.c[2]};
-  farthest_from(k.c, a);
-  farthest_from(a, b);
-  const double w[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double w[3] = {x[high] - x[low], y[high] - y[low], z[high] - z[low]};
   const double length = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
   if (length > 0 && std::isfinite(length)) {
     for (std::size_t d = 0; d < 3; ++d) k.u[d] = w[d] / length;
@@ -198,7 +186,7 @@ bool avx2_available() {
 }  // namespace
 
 PointTree::PointTree(std::span<const Point3> points, std::uint32_t leaf_size, Scan scan,
-                     unsigned threads)
+                     unsigned threads, Bounds bounds)
     : size_(points.size()),
       leaf_size_(std::max<std::uint32_t>(1, leaf_size)),
       vectorized_(scan == Scan::best && avx2_available()) {
@@ -254,6 +242,7 @@ PointTree::PointTree(std::span<const Point3> points, std::uint32_t leaf_size, Sc
       node.last = at;
     }
   });
+  if (bounds == Bounds::boxes) return;
   // Each node's slots: a subtree's nodes, and so its leaves' slots, are contiguous (the
   // build appends a node's lower subtree, then its upper one), and children follow their
   // parent.
@@ -270,8 +259,13 @@ PointTree::PointTree(std::span<const Point3> points, std::uint32_t leaf_size, Sc
         capsules_[k].r = HUGE_VAL;
         continue;
       }
+      const Node& node = nodes_[k];
+      std::size_t axis = 0;
+      for (std::size_t d = 1; d < 3; ++d) {
+        if (node.hi[d] - node.lo[d] > node.hi[axis] - node.lo[axis]) axis = d;
+      }
       capsules_[k] = capsule_of<Capsule>(x_.get(), y_.get(), z_.get(), index_.get(), span[k][0],
-                                         span[k][1]);
+                                         span[k][1], axis);
     }
   });
 }
@@ -407,7 +401,8 @@ void PointTree::search(std::uint32_t id, const double* q, Best& best) const {
 }
 
 bool PointTree::can_skip(std::uint32_t id, double box, const double* q, const Best& best) const {
-  return skippable(box, best.d2) || skippable(capsule_bound(capsules_[id], q), best.d2);
+  return skippable(box, best.d2) ||
+         (!capsules_.empty() && skippable(capsule_bound(capsules_[id], q), best.d2));
 }
 
 void PointTree::scan_leaf(const Node& node, const double* q, Best& best) const {

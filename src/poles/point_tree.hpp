@@ -45,6 +45,10 @@ class PointTree {
   static constexpr std::uint32_t kDefaultLeafSize = 64;
   /// How leaves are scanned: the best the processor supports, or plain C++.
   enum class Scan { best, portable };
+  /// What nearest() skips subtrees by: their boxes, or their boxes and capsules (built
+  /// with the tree: two passes over the points of every subtree of up to 4,096 points).
+  /// candidates_within() uses the boxes only.
+  enum class Bounds { boxes, capsules };
 
   /// Builds the tree over a copy of `points` (finite coordinates; the caller checks), on
   /// up to `threads` threads (0: hardware concurrency): subtrees below the first splits are
@@ -52,7 +56,7 @@ class PointTree {
   /// \pre points.size() < 2^32 − 1.
   explicit PointTree(std::span<const Point3> points,
                             std::uint32_t leaf_size = kDefaultLeafSize, Scan scan = Scan::best,
-                            unsigned threads = 1);
+                            unsigned threads = 1, Bounds bounds = Bounds::capsules);
 
   std::size_t size() const { return size_; }
   /// Whether queries use the vector (AVX2) scan.
@@ -129,7 +133,8 @@ class PointTree {
   // first, instead of one thread zeroing them all.)
   std::unique_ptr<double[]> x_, y_, z_;
   std::unique_ptr<std::uint32_t[]> index_;
-  std::vector<Capsule> capsules_;  // one per node (r = +inf above kCapsulePoints points)
+  std::vector<Capsule> capsules_;  // one per node (r = +inf above kCapsulePoints points),
+                                   // or none (Bounds::boxes)
   /// Whether the subtree `id` can be skipped: its box or its capsule bound exceeds the best.
   bool can_skip(std::uint32_t id, double box, const double* q, const Best& best) const;
 };

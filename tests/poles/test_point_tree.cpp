@@ -4,8 +4,9 @@
 // ones. Candidates within r: every point the exact predicate puts in the closed ball, each
 // once, and no point whose computed squared distance exceeds the inflated radius. Checked
 // on random, clustered, duplicate-heavy and tie-heavy sets, at extreme scales, with every
-// leaf size and both leaf scans, from no start and from a given one; trees built on one
-// thread and on several.
+// leaf size, both leaf scans and both kinds of bounds (boxes; boxes and capsules), from
+// no start and from a given one, and points crowding a circle (as poles do a torus's
+// core circle) queried from off it; trees built on one thread and on several.
 
 #include <rapidcheck/catch.h>
 
@@ -39,8 +40,9 @@ std::uint32_t scan_nearest(std::span<const Point3> points, const Point3& q) {
 
 /// Every query against the scan, from no start and from a start drawn among the points.
 void check_queries(std::span<const Point3> points, std::span<const Point3> queries,
-                   std::uint32_t leaf, PointTree::Scan scan, std::mt19937_64& rng) {
-  const PointTree tree(points, leaf, scan);
+                   std::uint32_t leaf, PointTree::Scan scan, PointTree::Bounds bounds,
+                   std::mt19937_64& rng) {
+  const PointTree tree(points, leaf, scan, 1, bounds);
   std::uniform_int_distribution<std::uint32_t> any(0,
                                                    static_cast<std::uint32_t>(points.size() - 1));
   for (const Point3& q : queries) {
@@ -127,7 +129,7 @@ std::vector<Point3> make_points(Shape shape, std::size_t n, double scale, double
 /// A drawn case: a point set of a drawn shape, scale and offset, a tree's leaf size and
 /// scan, and queries: `query_count` new points of the same shape (grid: half-lattice
 /// points, the centres of cells and edges, equidistant from several points), five points
-/// of the set and a point far outside.
+/// of the set, 40 points next to points of the set and a point far outside.
 struct DrawnCase {
   std::mt19937_64 rng;
   double scale = 1;
@@ -135,6 +137,7 @@ struct DrawnCase {
   std::vector<Point3> queries;
   std::uint32_t leaf = 64;
   PointTree::Scan scan = PointTree::Scan::best;
+  PointTree::Bounds bounds = PointTree::Bounds::capsules;
 };
 
 DrawnCase draw_case(std::size_t query_count) {
@@ -149,6 +152,8 @@ DrawnCase draw_case(std::size_t query_count) {
   const double offset = *rc::gen::element(0.0, 1e6, -3.5e8);
   c.leaf = *rc::gen::element(1U, 2U, 5U, 64U);
   c.scan = *rc::gen::element(PointTree::Scan::best, PointTree::Scan::portable);
+  c.bounds = *rc::gen::element(PointTree::Bounds::capsules, PointTree::Bounds::capsules,
+                               PointTree::Bounds::boxes);
   RC_LOG() << "seed " << seed << "\n";
   c.points = make_points(shape, n, c.scale, offset, c.rng);
   c.queries = make_points(shape, query_count, c.scale, offset, c.rng);
@@ -166,6 +171,14 @@ DrawnCase draw_case(std::size_t query_count) {
     }
   }
   for (std::size_t k = 0; k < 5; ++k) c.queries.push_back(c.points[(k * 37) % n]);
+  // Points of the set moved a little: each nearest to a query just outside it, which a
+  // subtree bound that leaves the point out would skip.
+  std::uniform_real_distribution<double> nudge(-1e-6, 1e-6);
+  for (std::size_t k = 0; k < 40; ++k) {
+    const Point3& p = c.points[(k * 53 + 11) % n];
+    c.queries.push_back(
+        {p.x + nudge(c.rng) * c.scale, p.y + nudge(c.rng) * c.scale, p.z + nudge(c.rng) * c.scale});
+  }
   c.queries.push_back({offset + 1e3 * c.scale, -1e3 * c.scale, 7 * c.scale});
   return c;
 }
@@ -175,7 +188,7 @@ DrawnCase draw_case(std::size_t query_count) {
 TEST_CASE("nearest point: the tree returns the scan's point, ties to the smallest index") {
   rc::prop("tree vs scan", [] {
     DrawnCase c = draw_case(20);
-    check_queries(c.points, c.queries, c.leaf, c.scan, c.rng);
+    check_queries(c.points, c.queries, c.leaf, c.scan, c.bounds, c.rng);
   });
 }
 
@@ -300,7 +313,7 @@ TEST_CASE("nearest point: the vector scan is used where the processor has AVX2")
 TEST_CASE("candidates within r: every point of the exact ball, nothing past the inflated radius") {
   rc::prop("tree vs exact ball", [] {
     DrawnCase c = draw_case(10);
-    const PointTree tree(c.points, c.leaf, c.scan);
+    const PointTree tree(c.points, c.leaf, c.scan, 1, c.bounds);
     const std::size_t n = c.points.size();
     std::uniform_real_distribution<double> fraction(0.0, 1.0);
     for (const Point3& q : c.queries) {
