@@ -79,8 +79,7 @@ double box_bound(const Box& box, const double* q) {
 constexpr double kCapsuleRange = 0x1p400;
 
 /// Subtrees of at most this many slots get a capsule (larger ones span curved stretches of
-/// an axis, where a capsule bounds little, and would cost a pass over their points at
-/// every level).
+/// an axis, where a capsule bounds little).
 constexpr std::uint32_t kCapsulePoints = 4096;
 
 /// The capsule of the points in slots [first, last) (padding skipped; see
@@ -141,10 +140,73 @@ Capsule capsule_of(const double* x, const double* y, const double* z, const std:
   return k;
 }
 
+/// A capsule holding capsules a and b (an inner node's, from its children's). The new axis
+/// runs through the two farthest apart of the four ends, and the new segment spans their
+/// projections: so it holds the projection of every point s of a's segment, whose distance
+/// to the new line is at most that of one of a's ends (distances to a line are convex
+/// along a segment). A point within a.r of such an s is therefore within (distance of that
+/// end) + a.r of the new segment: the new r is the largest of these over the four ends.
+/// Floating point, every difference taken between nearby values (the ends relative to the
+/// new centre, the midpoint of the old ones), so that the rounding follows the capsules'
+/// sizes, not their coordinates; with at most log2(kCapsulePoints) merges above a leaf the
+/// errors stay within capsule_bound()'s margin.
+template <class Capsule>
+Capsule merged_capsule(const Capsule& a, const Capsule& b) {
+  Capsule k;
+  if (a.r == HUGE_VAL || b.r == HUGE_VAL) {
+    k.r = HUGE_VAL;
+    return k;
+  }
+  for (std::size_t d = 0; d < 3; ++d) k.c[d] = 0.5 * (a.c[d] + b.c[d]);
+  double end[4][3];
+  double radius[4];
+  const Capsule* child[2] = {&a, &b};
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Capsule& x = *child[i / 2];
+    const double t = i % 2 == 0 ? x.t0 : x.t1;
+    for (std::size_t d = 0; d < 3; ++d) end[i][d] = (x.c[d] - k.c[d]) + t * x.u[d];
+    radius[i] = x.r;
+  }
+  double widest = -1;
+  std::size_t from = 0, to = 1;
+  for (std::size_t i = 0; i < 4; ++i) {
+    for (std::size_t j = i + 1; j < 4; ++j) {
+      const double w[3] = {end[j][0] - end[i][0], end[j][1] - end[i][1], end[j][2] - end[i][2]};
+      const double w2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+      if (w2 > widest) {
+        widest = w2;
+        from = i;
+        to = j;
+      }
+    }
+  }
+  const double w[3] = {end[to][0] - end[from][0], end[to][1] - end[from][1],
+                       end[to][2] - end[from][2]};
+  const double length = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+  if (length > 0 && std::isfinite(length)) {
+    for (std::size_t d = 0; d < 3; ++d) k.u[d] = w[d] / length;
+  }
+  k.t0 = HUGE_VAL;
+  k.t1 = -HUGE_VAL;
+  k.r = 0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const double* e = end[i];
+    const double t = e[0] * k.u[0] + e[1] * k.u[1] + e[2] * k.u[2];
+    k.t0 = std::min(k.t0, t);
+    k.t1 = std::max(k.t1, t);
+    const double f[3] = {e[0] - t * k.u[0], e[1] - t * k.u[1], e[2] - t * k.u[2]};
+    k.r = std::max(k.r, std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) + radius[i]);
+  }
+  k.scale = std::max(std::fabs(k.t0), std::fabs(k.t1)) + k.r;
+  if (!std::isfinite(k.scale)) k.r = HUGE_VAL;
+  return k;
+}
+
 /// A lower bound on the squared distances, as scans compute them, from q to the points of
-/// a node with capsule k, or 0. For a point p of the node, s_p = c + t_p·u (t_p as
-/// capsule_of computed it, in [t0, t1]) lies on the segment and |p − s_p| ≤ r up to the
-/// rounding of r, so |q − p| ≥ dist(q, segment) − r. The distance computed here, from q to
+/// a node with capsule k, or 0. Every point p of the node lies within r of the segment, up
+/// to rounding (a leaf: c + t_p·u, with t_p as capsule_of computed it, lies on the segment
+/// and within r of p; an inner node: see merged_capsule), so |q − p| ≥ dist(q, segment) − r
+/// by the triangle inequality. The distance computed here, from q to
 /// c + clamp(fl((q − c)·u))·u, exceeds dist(q, segment) by second-order terms only. Every
 /// rounded operation (differences from c, products with u, sums of squares, square roots)
 /// errs by at most 2⁻⁵³ of its result, so the errors of r and of that distance stay within
@@ -253,21 +315,26 @@ PointTree::PointTree(std::span<const Point3> points, std::uint32_t leaf_size, Sc
                         : std::array<std::uint32_t, 2>{span[node.first][0], span[node.last][1]};
   }
   capsules_.resize(nodes_.size());
-  parallel_chunks(nodes_.size(), workers, 256, [&](std::size_t begin, std::size_t end, unsigned) {
-    for (std::size_t k = begin; k < end; ++k) {
-      if (span[k][1] - span[k][0] > kCapsulePoints) {
-        capsules_[k].r = HUGE_VAL;
-        continue;
-      }
-      const Node& node = nodes_[k];
+  parallel_chunks(leaves.size(), workers, 256, [&](std::size_t begin, std::size_t end, unsigned) {
+    for (std::size_t l = begin; l < end; ++l) {
+      const Node& node = nodes_[leaves[l]];
       std::size_t axis = 0;
       for (std::size_t d = 1; d < 3; ++d) {
         if (node.hi[d] - node.lo[d] > node.hi[axis] - node.lo[axis]) axis = d;
       }
-      capsules_[k] = capsule_of<Capsule>(x_.get(), y_.get(), z_.get(), index_.get(), span[k][0],
-                                         span[k][1], axis);
+      capsules_[leaves[l]] = capsule_of<Capsule>(x_.get(), y_.get(), z_.get(), index_.get(),
+                                                 node.first, node.last, axis);
     }
   });
+  for (std::size_t k = nodes_.size(); k-- > 0;) {
+    const Node& node = nodes_[k];
+    if (node.leaf) continue;
+    if (span[k][1] - span[k][0] > kCapsulePoints) {
+      capsules_[k].r = HUGE_VAL;
+    } else {
+      capsules_[k] = merged_capsule(capsules_[node.first], capsules_[node.last]);
+    }
+  }
 }
 
 /// Builds the subtree of the ids [first, last), whose points lie in `region` (the cell the
