@@ -49,8 +49,7 @@ class PointTree {
   enum class Scan { best, portable };
   /// What nearest() skips subtrees by: their boxes, or their boxes and capsules (built
   /// with the tree: two passes over each leaf's points, then one merge per subtree of up
-  /// to 4,096 points).
-  /// candidates_within() uses the boxes only.
+  /// to 4,096 points). candidates_within() uses the boxes only.
   enum class Bounds { boxes, capsules };
 
   /// Builds the tree over a copy of `points` (finite coordinates; the caller checks), on
