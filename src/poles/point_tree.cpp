@@ -216,12 +216,11 @@ Capsule merged_capsule(const Capsule& a, const Capsule& b) {
 /// plus 2⁻⁵⁰⁰ covers them. (Coordinates up to kCapsuleRange: nothing overflows.) The bound,
 /// squared, then stands against the points' computed squared distances as the box bound
 /// does (skippable() allows a relative 2⁻⁴⁰ for the rounding of both).
+/// \pre q's coordinates are at most kCapsuleRange in magnitude (nearest_from checks once
+/// per query).
 template <class Capsule>
 double capsule_bound(const Capsule& k, const double* q) {
   if (k.r == HUGE_VAL) return 0.0;
-  if (!(std::max({std::fabs(q[0]), std::fabs(q[1]), std::fabs(q[2])}) <= kCapsuleRange)) {
-    return 0.0;
-  }
   const double v[3] = {q[0] - k.c[0], q[1] - k.c[1], q[2] - k.c[2]};
   const double t = std::clamp(v[0] * k.u[0] + v[1] * k.u[1] + v[2] * k.u[2], k.t0, k.t1);
   const double e[3] = {v[0] - t * k.u[0], v[1] - t * k.u[1], v[2] - t * k.u[2]};
@@ -437,6 +436,9 @@ std::uint32_t PointTree::nearest(const Point3& q) const {
 std::uint32_t PointTree::nearest_from(const Point3& q, std::uint32_t index,
                                       double squared_distance) const {
   Best best{squared_distance, index};
+  // A query beyond kCapsuleRange tests no capsule (see capsule_bound).
+  best.capsules = !capsules_.empty() &&
+                  std::max({std::fabs(q.x), std::fabs(q.y), std::fabs(q.z)}) <= kCapsuleRange;
   if (nodes_.empty()) return index;
   const double query[3] = {q.x, q.y, q.z};
   if (!can_skip(0, box_bound(nodes_[0], query), query, best)) search(0, query, best);
@@ -470,7 +472,7 @@ void PointTree::search(std::uint32_t id, const double* q, Best& best) const {
 
 bool PointTree::can_skip(std::uint32_t id, double box, const double* q, const Best& best) const {
   return skippable(box, best.d2) ||
-         (!capsules_.empty() && skippable(capsule_bound(capsules_[id], q), best.d2));
+         (best.capsules && skippable(capsule_bound(capsules_[id], q), best.d2));
 }
 
 void PointTree::scan_leaf(const Node& node, const double* q, Best& best) const {
@@ -479,7 +481,10 @@ void PointTree::scan_leaf(const Node& node, const double* q, Best& best) const {
     const double dy = y_[k] - q[1];
     const double dz = z_[k] - q[2];
     const double d2 = (dx * dx + dy * dy) + dz * dz;
-    if (d2 < best.d2 || (d2 == best.d2 && index_[k] < best.index)) best = {d2, index_[k]};
+    if (d2 < best.d2 || (d2 == best.d2 && index_[k] < best.index)) {
+      best.d2 = d2;
+      best.index = index_[k];
+    }
   }
 }
 
@@ -585,7 +590,10 @@ __attribute__((target("avx2"))) void PointTree::scan_leaf_avx2(const Node& node,
     _mm256_store_pd(value, d2);
     for (std::uint32_t j = 0; j < 4; ++j) {
       const std::uint32_t i = index_[k + j];
-      if (value[j] < best.d2 || (value[j] == best.d2 && i < best.index)) best = {value[j], i};
+      if (value[j] < best.d2 || (value[j] == best.d2 && i < best.index)) {
+        best.d2 = value[j];
+        best.index = i;
+      }
     }
   }
 }

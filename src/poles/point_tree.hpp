@@ -107,6 +107,7 @@ class PointTree {
   struct Best {
     double d2;
     std::uint32_t index;
+    bool capsules = false;  // whether this query tests capsules (see nearest_from)
   };
 
   /// Appends the subtree of the ids [first, last) to `nodes`; returns its root's index.

@@ -267,6 +267,45 @@ TEST_CASE("nearest point: a tree built on several threads answers as the scan do
   }
 }
 
+TEST_CASE("nearest point: queries on the points of a skew line, each point twice") {
+  // Points along a line in no axis direction, each listed twice (index k and k + n): a
+  // query at a point is at distance 0 from both, and the smaller index must win, from no
+  // start and from the larger one. The capsules' segments and radii are computed with
+  // rounding, so a subtree holding the point can get a positive computed bound, which
+  // capsule_bound's margin must absorb.
+  const std::size_t n = 1500;
+  for (const double offset : {0.0, 1e3, -7.5e5}) {
+    std::vector<Point3> points;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double s = 0.37 * static_cast<double>(k) + 1e-3 * static_cast<double>(k % 7);
+      points.push_back({offset + s, offset + 0.7071067811865476 * s, 0.3183098861837907 * s});
+    }
+    std::mt19937_64 rng(17);
+    std::vector<Point3> shuffled = points;
+    std::shuffle(shuffled.begin(), shuffled.end(), rng);
+    points.insert(points.end(), shuffled.begin(), shuffled.end());
+    std::vector<std::uint32_t> twin(n);
+    for (std::uint32_t k = 0; k < n; ++k) {
+      for (std::uint32_t m = 0; m < n; ++m) {
+        if (points[n + m].x == points[k].x && points[n + m].y == points[k].y &&
+            points[n + m].z == points[k].z) {
+          twin[k] = static_cast<std::uint32_t>(n) + m;
+        }
+      }
+    }
+    for (const std::uint32_t leaf : {1U, 2U, 5U, 64U}) {
+      const PointTree tree(points, leaf);
+      std::size_t wrong = 0;
+      for (std::uint32_t k = 0; k < n; ++k) {
+        wrong += tree.nearest(points[k]) != k;
+        wrong += tree.nearest_from(points[k], twin[k], 0.0) != k;
+      }
+      INFO("offset " << offset << ", leaf " << leaf);
+      CHECK(wrong == 0);
+    }
+  }
+}
+
 TEST_CASE("nearest point: degenerate sets") {
   SECTION("one point, and many copies of one point") {
     const std::vector<Point3> one = {{1, 2, 3}};
