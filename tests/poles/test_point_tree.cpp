@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -280,18 +281,17 @@ TEST_CASE("nearest point: queries on the points of a skew line, each point twice
       const double s = 0.37 * static_cast<double>(k) + 1e-3 * static_cast<double>(k % 7);
       points.push_back({offset + s, offset + 0.7071067811865476 * s, 0.3183098861837907 * s});
     }
+    // The copies in shuffled order: copy n + m is point order[m], so point k's twin is
+    // n + (the place of k in order).
     std::mt19937_64 rng(17);
-    std::vector<Point3> shuffled = points;
-    std::shuffle(shuffled.begin(), shuffled.end(), rng);
-    points.insert(points.end(), shuffled.begin(), shuffled.end());
+    std::vector<std::uint32_t> order(n);
+    std::iota(order.begin(), order.end(), 0U);
+    std::shuffle(order.begin(), order.end(), rng);
     std::vector<std::uint32_t> twin(n);
-    for (std::uint32_t k = 0; k < n; ++k) {
-      for (std::uint32_t m = 0; m < n; ++m) {
-        if (points[n + m].x == points[k].x && points[n + m].y == points[k].y &&
-            points[n + m].z == points[k].z) {
-          twin[k] = static_cast<std::uint32_t>(n) + m;
-        }
-      }
+    points.reserve(2 * n);
+    for (std::uint32_t m = 0; m < n; ++m) {
+      points.push_back(points[order[m]]);
+      twin[order[m]] = static_cast<std::uint32_t>(n + m);
     }
     for (const std::uint32_t leaf : {1U, 2U, 5U, 64U}) {
       const PointTree tree(points, leaf);
