@@ -1419,29 +1419,31 @@ bool Builder::find_conflict_region_impl(CellId start, VertexId p) {
   for (std::size_t head = 0; head < conflict_.size(); ++head) {
     const CellId x = conflict_[head];
     const Cell& k = cells[x];
-    // The filter values of the untested neighbours first, then the branches on them:
-    // the (independent) evaluations overlap instead of waiting, one by one, for a branch
-    // on a sign that is hard to predict.
+    conflict_.make_room(4);
+    outside_.make_room(4);
+    boundary_.make_room(8);
+    // The filter values of the untested neighbours first, then the lists updated from
+    // them: the (independent) evaluations overlap instead of waiting, one by one, and the
+    // signs, hard to predict, choose where values are written rather than which code runs
+    // (push_if, the mark and the prefetch's address).
     int untested[4];
     int count = 0;
     for (int i = 0; i < 4; ++i) {
       const CellId y = k.n[i] >> 2;
       const unsigned m = mark(y);
-      if (m == kNone) {
-        // A worker never looks across a facet of shared vertices (see facet_is_shared).
-        if constexpr (kOwned) {
-          if (facet_is_shared(k, i)) return false;
-        }
-        untested[count++] = i;
-        // y shares three vertices with x (whose test loaded them): only the one opposite
-        // the shared facet is new.
-        const VertexId v = cells[y].v[k.n[i] & 3u];
-        if (v != kInfiniteVertex) {
-          __builtin_prefetch(&points_[v]);
-          if constexpr (kWeighted) __builtin_prefetch(&weights_[v]);
-        }
-      } else if (m == kOutside) {
-        boundary_.push_back({x, i});
+      // A worker never looks across a facet of shared vertices (see facet_is_shared).
+      if constexpr (kOwned) {
+        if (m == kNone && facet_is_shared(k, i)) return false;
+      }
+      untested[count] = i;
+      count += static_cast<int>(m == kNone);
+      boundary_.push_if({x, i}, m == kOutside);
+      // y shares three vertices with x (whose test loaded them): only the one opposite
+      // the shared facet is new.
+      const VertexId v = cells[y].v[k.n[i] & 3u];
+      if (v != kInfiniteVertex) {
+        __builtin_prefetch(&points_[v]);
+        if constexpr (kWeighted) __builtin_prefetch(&weights_[v]);
       }
     }
     int f[4];
@@ -1450,23 +1452,21 @@ bool Builder::find_conflict_region_impl(CellId start, VertexId p) {
       const int i = untested[j];
       const CellId y = k.n[i] >> 2;
       const bool conflict = f[j] != pr::detail::kUndecided ? f[j] > 0 : in_conflict_general(y, p);
-      if (conflict) {
-        if constexpr (kOwned) {
-          // y shares three of the worker's vertices with x: is the fourth its own too?
-          if (!owned(cells[y].v[k.n[i] & 3u])) {
-            set_mark(y, kOutside);  // marked, so that clear_conflict_marks() clears it
-            outside_.push_back(y);
-            return false;
-          }
+      if constexpr (kOwned) {
+        // y shares three of the worker's vertices with x: is the fourth its own too?
+        if (conflict && !owned(cells[y].v[k.n[i] & 3u])) {
+          set_mark(y, kOutside);  // marked, so that clear_conflict_marks() clears it
+          outside_.push_back(y);
+          return false;
         }
-        set_mark(y, kConflict);
-        conflict_.push_back(y);
-        prefetch_neighbors(y);
-        continue;
       }
-      set_mark(y, kOutside);
-      outside_.push_back(y);
-      boundary_.push_back({x, i});
+      set_mark(y, conflict ? kConflict : kOutside);
+      conflict_.push_if(y, conflict);
+      outside_.push_if(y, !conflict);
+      boundary_.push_if({x, i}, !conflict);
+      // A cell joining the queue has its neighbours prefetched; otherwise the address is
+      // x's, whose neighbours are in cache already.
+      prefetch_neighbors(conflict ? y : x);
     }
   }
   stats_->conflict_cells += conflict_.size();
@@ -1490,6 +1490,7 @@ void Builder::build_star(VertexId p) {
   star_.resize(m);
   star_partner_slot_.resize(m);
   local_vertices_.clear();
+  local_vertices_.make_room(kLocal);  // local_number's pushes
   for (std::size_t s = 0; s < m; ++s) {
     const BoundaryFacet& b = boundary_[s];
     const CellId n = new_cell();

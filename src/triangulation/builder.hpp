@@ -2,6 +2,7 @@
 // The incremental construction of a RegularTriangulation3 (Bowyer–Watson with the perturbed
 // power test). Private to src/triangulation.
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cstdint>
@@ -13,6 +14,41 @@
 #include "rstruct/triangulation/regular_triangulation_3.hpp"
 
 namespace rstruct::triangulation {
+
+/// A growable array of trivially copyable values that can append without a branch:
+/// push_if(v, keep) writes v past the end and moves the end only when keep holds, so that
+/// a sign that is hard to predict (is this cell in conflict?) costs no jump. make_room(k)
+/// guarantees room for k such writes. The storage only grows; clear() keeps it.
+template <class T>
+class ScratchList {
+ public:
+  void clear() { size_ = 0; }
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  T& operator[](std::size_t i) { return data_[i]; }
+  const T& operator[](std::size_t i) const { return data_[i]; }
+  T& front() { return data_[0]; }
+  T* begin() { return data_.data(); }
+  T* end() { return data_.data() + size_; }
+  const T* begin() const { return data_.data(); }
+  const T* end() const { return data_.data() + size_; }
+  void make_room(std::size_t k) {
+    if (size_ + k > data_.size()) [[unlikely]] data_.resize(std::max(2 * data_.size(), size_ + k));
+  }
+  void push_back(const T& v) {
+    make_room(1);
+    data_[size_++] = v;
+  }
+  /// \pre make_room left room for this write.
+  void push_if(const T& v, bool keep) {
+    data_[size_] = v;
+    size_ += static_cast<std::size_t>(keep);
+  }
+
+ private:
+  std::vector<T> data_;
+  std::size_t size_ = 0;
+};
 
 class Builder {
  public:
@@ -190,13 +226,17 @@ class Builder {
   void link_star();
   /// Number of boundary vertex v (1..kLocal-1; the infinite vertex is 0), or 0 when the
   /// numbering is full.
+  /// Without a branch on whether v is new (about one call in six, at random): build_star
+  /// made room for kLocal pushes.
   std::uint8_t local_number(VertexId v) {
     if (v == kInfiniteVertex) return 0;
-    if (vertex_local_[v] == 0 && local_vertices_.size() < kLocal - 1) {
-      local_vertices_.push_back(v);
-      vertex_local_[v] = static_cast<std::uint8_t>(local_vertices_.size());
-    }
-    return vertex_local_[v];
+    const std::uint8_t current = vertex_local_[v];
+    const bool fresh = (current == 0) & (local_vertices_.size() < kLocal - 1);
+    local_vertices_.push_if(v, fresh);
+    const std::uint8_t number =
+        fresh ? static_cast<std::uint8_t>(local_vertices_.size()) : current;
+    vertex_local_[v] = number;
+    return number;
   }
   void link_star_hashed();
   /// The vertices p's insertion removed (reported with last_): a duplicate of p
@@ -236,9 +276,9 @@ class Builder {
     w = (w & ~(std::uint64_t{3} << shift)) | (std::uint64_t{m} << shift);
   }
   std::vector<std::uint8_t> vertex_mark_;  // per point (weighted only)
-  std::vector<CellId> conflict_;
-  std::vector<CellId> outside_;
-  std::vector<BoundaryFacet> boundary_;
+  ScratchList<CellId> conflict_;
+  ScratchList<CellId> outside_;
+  ScratchList<BoundaryFacet> boundary_;
   std::vector<CellId> star_;                // new cell of boundary_[k]
   /// For new cell star_[k] and each facet j through p: the edge table slot of the
   /// opposite direction, where the neighbour across facet j wrote itself.
@@ -255,7 +295,7 @@ class Builder {
   // written by the same insertion), so only the entries in use reach the cache.
   static constexpr std::size_t kLocal = 128;
   std::vector<std::uint8_t> vertex_local_;   // per point: its number on the boundary, or 0
-  std::vector<VertexId> local_vertices_;
+  ScratchList<VertexId> local_vertices_;
   std::vector<std::uint32_t> edge_faces_ = std::vector<std::uint32_t>(kLocal * kLocal);
   std::uint32_t stamp_ = 0;
   std::vector<VertexId> cavity_vertices_;
