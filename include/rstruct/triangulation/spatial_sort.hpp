@@ -17,6 +17,11 @@ namespace rstruct::triangulation {
 /// Hilbert index (63 bits, 21 per axis) of grid cell (x, y, z), each coordinate < 2^21.
 std::uint64_t hilbert_index_3d(std::uint32_t x, std::uint32_t y, std::uint32_t z);
 
+/// hilbert_index_3d of the cells (x[i], y[i], z[i]) into out[i] for i < x.size(), several
+/// at a time (the orders compute their keys this way). \pre x, y, z and out have equal sizes.
+void hilbert_indices_3d(std::span<const std::uint32_t> x, std::span<const std::uint32_t> y,
+                        std::span<const std::uint32_t> z, std::span<std::uint64_t> out);
+
 /// The indices 0..n−1 of `points` in Hilbert order (ties broken by index), computed on
 /// `threads` threads (0: hardware concurrency); the order does not depend on them.
 /// \pre every coordinate finite.
