@@ -1413,9 +1413,9 @@ bool Builder::find_conflict_region_impl(CellId start, VertexId p) {
   prefetch_neighbors(start);
   // Breadth first, conflict_ being the queue: a cell joins the queue well before its
   // neighbours are tested, and its neighbours' cells are prefetched when it joins. When it
-  // is taken from the queue, the new points of its untested neighbours are prefetched, all
-  // before the first test: the tests then rarely wait for memory (cells and points of a
-  // cavity are scattered over the arrays).
+  // is taken from the queue, the new points of its neighbours are prefetched, all before
+  // the first test: the tests then rarely wait for memory (cells and points of a cavity are
+  // scattered over the arrays).
   for (std::size_t head = 0; head < conflict_.size(); ++head) {
     const CellId x = conflict_[head];
     const Cell& k = cells[x];

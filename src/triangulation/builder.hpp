@@ -27,7 +27,6 @@ class ScratchList {
   bool empty() const { return size_ == 0; }
   T& operator[](std::size_t i) { return data_[i]; }
   const T& operator[](std::size_t i) const { return data_[i]; }
-  T& front() { return data_[0]; }
   T* begin() { return data_.data(); }
   T* end() { return data_.data() + size_; }
   const T* begin() const { return data_.data(); }
@@ -225,9 +224,8 @@ class Builder {
   void build_star(VertexId p);
   void link_star();
   /// Number of boundary vertex v (1..kLocal-1; the infinite vertex is 0), or 0 when the
-  /// numbering is full.
-  /// Without a branch on whether v is new (about one call in six, at random): build_star
-  /// made room for kLocal pushes.
+  /// numbering is full. Without a branch on whether v is new (about one call in six, at
+  /// random): build_star made room for kLocal pushes.
   std::uint8_t local_number(VertexId v) {
     if (v == kInfiniteVertex) return 0;
     const std::uint8_t current = vertex_local_[v];

@@ -5,6 +5,7 @@
 #include <numeric>
 #include <utility>
 
+#include "rstruct/core/error.hpp"
 #include "rstruct/core/parallel.hpp"
 
 namespace rstruct::triangulation {
@@ -189,6 +190,9 @@ std::uint64_t hilbert_index_3d(std::uint32_t x, std::uint32_t y, std::uint32_t z
 
 void hilbert_indices_3d(std::span<const std::uint32_t> x, std::span<const std::uint32_t> y,
                         std::span<const std::uint32_t> z, std::span<std::uint64_t> out) {
+  if (y.size() != x.size() || z.size() != x.size() || out.size() != x.size()) {
+    throw InvalidInput("hilbert_indices_3d: coordinate and output spans of different sizes");
+  }
   for (std::size_t b = 0; b < x.size(); b += kLanes) {
     const std::size_t m = std::min(kLanes, x.size() - b);
     std::uint32_t g[3][kLanes] = {};

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "generators.hpp"
+#include "rstruct/core/error.hpp"
 #include "rstruct/triangulation/spatial_sort.hpp"
 
 using rstruct::triangulation::hilbert_index_3d;
@@ -44,6 +45,12 @@ TEST_CASE("the keys computed several at a time are the keys one at a time") {
   for (int i = 0; i < 4; ++i) {
     CHECK(hilbert_index_3d(known[i][0], known[i][1], known[i][2]) == known_keys[i]);
   }
+  std::vector<std::uint32_t> two(2, 1), one(1, 1);
+  std::vector<std::uint64_t> out(2);
+  CHECK_THROWS_AS(rstruct::triangulation::hilbert_indices_3d(two, one, two, out),
+                  rstruct::InvalidInput);
+  CHECK_THROWS_AS(rstruct::triangulation::hilbert_indices_3d(two, two, two, std::span(out).first(1)),
+                  rstruct::InvalidInput);
   rc::prop("lanes", [] {
     const auto n = static_cast<std::size_t>(*rc::gen::inRange(0, 100));
     const auto coordinate = rc::gen::inRange<std::uint32_t>(0, 1u << 21);

@@ -18,7 +18,8 @@ namespace rstruct::triangulation {
 std::uint64_t hilbert_index_3d(std::uint32_t x, std::uint32_t y, std::uint32_t z);
 
 /// hilbert_index_3d of the cells (x[i], y[i], z[i]) into out[i] for i < x.size(), several
-/// at a time (the orders compute their keys this way). \pre x, y, z and out have equal sizes.
+/// at a time (the orders compute their keys this way).
+/// \throws InvalidInput when x, y, z and out differ in size.
 void hilbert_indices_3d(std::span<const std::uint32_t> x, std::span<const std::uint32_t> y,
                         std::span<const std::uint32_t> z, std::span<std::uint64_t> out);
 
