@@ -24,7 +24,6 @@ class ScratchList {
  public:
   void clear() { size_ = 0; }
   std::size_t size() const { return size_; }
-  bool empty() const { return size_ == 0; }
   T& operator[](std::size_t i) { return data_[i]; }
   const T& operator[](std::size_t i) const { return data_[i]; }
   T* begin() { return data_.data(); }

@@ -193,6 +193,9 @@ void hilbert_indices_3d(std::span<const std::uint32_t> x, std::span<const std::u
   if (y.size() != x.size() || z.size() != x.size() || out.size() != x.size()) {
     throw InvalidInput("hilbert_indices_3d: coordinate and output spans of different sizes");
   }
+  // HilbertKeyer::keys groups its points' cells the same way, writing them straight into
+  // the lanes; routing it through a shared helper of both made the BRIO sort of 10^6 points
+  // about 15 ms slower (6 pinned pairs, 2026-12-07).
   for (std::size_t b = 0; b < x.size(); b += kLanes) {
     const std::size_t m = std::min(kLanes, x.size() - b);
     std::uint32_t g[3][kLanes] = {};

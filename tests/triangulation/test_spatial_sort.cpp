@@ -3,6 +3,7 @@
 #include <rapidcheck/catch.h>
 
 #include <catch2/catch.hpp>
+#include <bit>
 #include <cstdlib>
 #include <map>
 
@@ -61,6 +62,25 @@ TEST_CASE("the keys computed several at a time are the keys one at a time") {
     rstruct::triangulation::hilbert_indices_3d(x, y, z, keys);
     for (std::size_t i = 0; i < n; ++i) RC_ASSERT(keys[i] == hilbert_index_3d(x[i], y[i], z[i]));
   });
+}
+
+TEST_CASE("the sorting keys span the bounding box: its corners take the curve's octants in order") {
+  // hilbert_keys (16 bits per axis over the box, the key's top 32 bits): the first level of
+  // the curve visits the eight octants one after another, each next to the one before, so
+  // the corners' top 3 bits are 0..7 and corners of consecutive octants share two
+  // coordinates. Keys cut from the wrong bits of the index, or a grid not scaled to the
+  // box, break this.
+  std::vector<rstruct::Point3> corners;
+  for (int i = 0; i < 8; ++i) corners.push_back({double(i & 1), double(i >> 1 & 1), double(i >> 2)});
+  const std::vector<std::uint32_t> keys = rstruct::triangulation::hilbert_keys(corners);
+  std::map<std::uint32_t, int> by_octant;
+  for (int i = 0; i < 8; ++i) by_octant[keys[static_cast<std::size_t>(i)] >> 29] = i;
+  REQUIRE(by_octant.size() == 8);
+  CHECK(by_octant.begin()->first == 0);
+  CHECK(by_octant.rbegin()->first == 7);
+  for (auto it = std::next(by_octant.begin()); it != by_octant.end(); ++it) {
+    CHECK(std::popcount(static_cast<unsigned>(it->second ^ std::prev(it)->second)) == 1);
+  }
 }
 
 TEST_CASE("orders are permutations") {
