@@ -4,11 +4,12 @@
 // is its own; each case runs --runs times and the medians are printed.
 //
 // Usage: bench_triangulation [--runs R] [--max N] [--huge] [--case NAME] [--threads T]
-//                            [--scheme automatic|borders|locks] [--canonical]
+//                            [--scheme automatic|borders|locks] [--canonical] [--brio D]
 //   --max N   largest uniform size of the ladder (default 1e6); --huge adds 1e7.
 //   --threads T  insertion threads (default 1, the targets are single-thread).
 //   --scheme S   how the parallel passes share the work (TriangulationOptions).
 //   --canonical  number the cells in the canonical order (counted in the insertion time).
+//   --brio D     BRIO rounds of 1/D (TriangulationOptions::brio_divisor, default 4).
 // Columns: case, points, vertices, finite cells, hidden+merged, sort s, insertion s,
 // total wall and CPU s, bytes per point (peak RSS minus RSS before the points were generated, so the
 // input points, which the triangulation owns, are included), walk steps and conflict
@@ -95,6 +96,7 @@ unsigned g_threads = 1;
 rstruct::triangulation::TriangulationOptions::ParallelScheme g_scheme =
     rstruct::triangulation::TriangulationOptions::ParallelScheme::automatic;
 bool g_canonical = false;
+std::uint32_t g_brio_divisor = rstruct::triangulation::TriangulationOptions{}.brio_divisor;
 
 Result run_case(const std::string& name, std::size_t n, std::uint64_t seed) {
   const std::size_t before = rstruct::current_memory_bytes();
@@ -113,6 +115,7 @@ Result run_case(const std::string& name, std::size_t n, std::uint64_t seed) {
   options.threads = g_threads;
   options.parallel_scheme = g_scheme;
   options.canonical_order = g_canonical;
+  options.brio_divisor = g_brio_divisor;
   const RegularTriangulation3 t =
       weights.empty() ? RegularTriangulation3(std::move(points), options)
                       : RegularTriangulation3(std::move(points), std::move(weights), options);
@@ -229,10 +232,17 @@ int main(int argc, char** argv) {
                                   : Scheme::automatic;
     } else if (a == "--canonical") {
       g_canonical = true;
+    } else if (a == "--brio" && i + 1 < argc) {
+      const int d = std::atoi(argv[++i]);
+      if (d < 2) {
+        std::fprintf(stderr, "--brio: a divisor of at least 2\n");
+        return 2;
+      }
+      g_brio_divisor = static_cast<std::uint32_t>(d);
     } else {
       std::fprintf(stderr,
                    "usage: %s [--runs R] [--max N] [--huge] [--case NAME] [--threads T] "
-                   "[--scheme automatic|borders|locks] [--canonical]\n",
+                   "[--scheme automatic|borders|locks] [--canonical] [--brio D]\n",
                    argv[0]);
       return 2;
     }

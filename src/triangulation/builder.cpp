@@ -113,7 +113,7 @@ void Builder::run() {
   // in insertion order), from the sort.
   std::vector<std::uint32_t> input_keys;
   if (options_.spatial_sort) {
-    t_.order_ = brio_order(t_.points_, options_.seed, 4, 256, workers_,
+    t_.order_ = brio_order(t_.points_, options_.seed, options_.brio_divisor, 256, workers_,
                            reorder_ && workers_ > 1 ? &input_keys : nullptr);
     if (shared > 0) {
       std::stable_partition(t_.order_.begin(), t_.order_.end(),

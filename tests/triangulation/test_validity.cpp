@@ -171,6 +171,28 @@ TEST_CASE("the result does not depend on the insertion order") {
   });
 }
 
+TEST_CASE("the BRIO divisor changes the insertion order, not the triangulation") {
+  // Large enough for several rounds (the first holds at most 256 expected points).
+  const std::size_t n = 6000;
+  for (const bool weighted : {false, true}) {
+    const Input in{rstruct::test::uniform_points(n, 17),
+                   weighted ? rstruct::test::hiding_weights(n, 0.3, 18) : std::vector<double>{}};
+    TriangulationOptions reference;
+    const RegularTriangulation3 t4 = build(in, reference);
+    REQUIRE(reference.brio_divisor == 4);
+    for (const std::uint32_t divisor : {0u, 2u, 16u, 1000u}) {
+      TriangulationOptions options;
+      options.brio_divisor = divisor;
+      const RegularTriangulation3 t = build(in, options);
+      CHECK(t.is_valid());
+      CHECK(cell_set(t) == cell_set(t4));
+      CHECK(t.hidden_points().size() == t4.hidden_points().size());
+      // Another order: the walks differ (0 acts as 2).
+      if (divisor != 4) CHECK(t.stats().walk_steps != t4.stats().walk_steps);
+    }
+  }
+}
+
 TEST_CASE("a weighted cavity with hundreds of boundary vertices hides the vertices inside") {
   // 300 weightless points on the unit sphere, 40 weightless points within 0.3 of its
   // centre, then the centre with weight 0.36: its cavity is bounded by the sphere points

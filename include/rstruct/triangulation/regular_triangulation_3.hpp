@@ -109,6 +109,13 @@ struct DualSegment {
 struct TriangulationOptions {
   /// BRIO rounds, each sorted along a Hilbert curve. false: insert in input order.
   bool spatial_sort = true;
+  /// BRIO's round sizes: the last round takes each point with probability
+  /// 1 − 1/brio_divisor, the round before it the same share of the rest, and so on down
+  /// to a first round of at most 256 expected points (values below 2 act as 2). Only the
+  /// speed depends on it. Points in a volume: 4 (10^6 uniform points, one thread, 16 was
+  /// 1 % slower, within the noise). Points on a surface: 16, as the pipeline's
+  /// triangulations use (its longer last round walks less: see pole_analysis.cpp).
+  std::uint32_t brio_divisor = 4;
   /// Seed of the BRIO shuffle and of the walk's random choices (the result, being the
   /// unique perturbed regular triangulation, does not depend on it; only the speed does).
   std::uint64_t seed = 0x9E3779B97F4A7C15ull;
