@@ -30,8 +30,9 @@ TEST_CASE("random rotations are rotations and deterministic") {
     const RigidTransform r = RigidTransform::random_rotation(b);
     RC_ASSERT(q.q == r.q);
     // Bounds to first order in u = 2⁻⁵³ (with room for the second). The normalised
-    // quaternion q̂ has s = |q̂|² within 8u of 1 (the norm's sum of squares 4u, its square
-    // root u, halved by the root, so 3u, doubled in s; each division u, doubled), and the
+    // quaternion q̂ has s = |q̂|² within 8u of 1 (the norm: its sum of squares 4u, halved
+    // by the square root, plus the root's rounding, 3u, doubled in s; each division's
+    // rounding u, doubled), and the
     // formula's exact matrix is then M = (1 − s)I + sR for a rotation R, so that
     // MᵀM − I = s(1 − s)(R + Rᵀ − 2I): entries up to 4·8u = 32u (R a half turn). The
     // computed entries differ from M's by at most 5u on the diagonal (two squares, a sum,
