@@ -328,16 +328,8 @@ SeedPolytope compute_seed_polytope(std::span<const Point3> samples,
     centres.push_back(samples[s]);
     weights.push_back(surface[s].r * surface[s].r);
   }
-  triangulation::TriangulationOptions rt_options;
-  rt_options.threads = options.threads;
-  // Balls centred on surface samples: locks from the first parallel round, as the pole
-  // analysis's Delaunay (see there). Double torus level 1 (bench_seed, 5 pairs, steal
-  // gap 256 in both): 0.400 / 0.366 / 0.381 / 0.410 / 0.402 -> 0.351 / 0.374 / 0.373 /
-  // 0.391 / 0.411 s.
-  rt_options.parallel_scheme = triangulation::TriangulationOptions::ParallelScheme::locks;
-  // BRIO rounds of 1/16, as the pole analysis's Delaunay (see there). Double torus level 1
-  // (5 pairs): 0.311 -> 0.293 s (medians).
-  rt_options.brio_divisor = 16;
+  // Balls centred on surface samples.
+  const auto rt_options = triangulation::TriangulationOptions::for_surface_points(options.threads);
   const RegularTriangulation3 rt(std::move(centres), std::move(weights), rt_options);
   out.hidden_balls = rt.hidden_points().size() + rt.duplicate_points().size();
   out.triangulation = rt.stats();

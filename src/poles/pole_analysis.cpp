@@ -131,21 +131,8 @@ PoleAnalysis analyse_poles(std::span<const Point3> samples, const PoleAnalysisOp
   Soup soup;
   {
     Report::Stage stage(r, "delaunay");
-    triangulation::TriangulationOptions dt_options;
-    dt_options.threads = options.threads;
+    auto dt_options = triangulation::TriangulationOptions::for_surface_points(options.threads);
     dt_options.insert_first = box.size();  // shared by the workers (see insert_first)
-    // Samples of a surface: the automatic scheme's first pass with fixed borders would
-    // defer about half of its round before turning to locks (see builder.cpp). Double
-    // torus (bench_seed, 5 pairs, steal gap 256 in both): 0.425 / 0.358 / 0.354 / 0.377 /
-    // 0.373 -> 0.324 / 0.319 / 0.324 / 0.360 / 0.355 s; that round alone (rstruct
-    // delaunay, 4 pairs) 0.091 / 0.059 / 0.064 / 0.063 -> 0.049 / 0.042 / 0.046 / 0.051 s.
-    dt_options.parallel_scheme = triangulation::TriangulationOptions::ParallelScheme::locks;
-    // BRIO rounds of 1/16 instead of 1/4 (a last round of 15/16 of the points, ordered
-    // along the curve: shorter walks; the cavities are about as large). 10^6-sample torus
-    // (bench_seed --torus 1000000, 4 interleaved pairs): Delaunay 6.34 / 6.09 / 6.09 /
-    // 6.38 -> 5.34 / 5.65 / 5.89 / 5.76 s; 5 more interleaved rounds, medians: 1/4 5.96,
-    // 1/8 5.69, 1/16 5.58, 1/32 5.80 s. Double torus (5 pairs): 0.288 -> 0.282 s (medians).
-    dt_options.brio_divisor = 16;
     // The sites are given up (a copy would stay in memory beside the cells at their
     // largest) and made again after.
     triangulation::DelaunayCells dt =

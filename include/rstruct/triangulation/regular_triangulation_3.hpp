@@ -113,8 +113,7 @@ struct TriangulationOptions {
   /// 1 − 1/brio_divisor, the round before it the same share of the rest, and so on down
   /// to a first round of at most 256 expected points (values below 2 act as 2). Only the
   /// speed depends on it. Points in a volume: 4 (10^6 uniform points, one thread, 16 was
-  /// 1 % slower, within the noise). Points on a surface: 16, as the pipeline's
-  /// triangulations use (its longer last round walks less: see pole_analysis.cpp).
+  /// 1 % slower, within the noise). Points on a surface: 16 (see for_surface_points).
   std::uint32_t brio_divisor = 4;
   /// Seed of the BRIO shuffle and of the walk's random choices (the result, being the
   /// unique perturbed regular triangulation, does not depend on it; only the speed does).
@@ -170,6 +169,29 @@ struct TriangulationOptions {
   /// parallel pass took locks (what `rstruct delaunay` uses, so that its .ele file is the
   /// same on every run without paying for the renumbering where it is not needed).
   bool canonical_order_after_locks = false;
+
+  /// Options for points sampled on a surface, as the pipeline's triangulations (the pole
+  /// analysis's Delaunay, the surface balls' regular triangulation), on `threads` threads:
+  /// - vertex locks from the first parallel pass: the automatic scheme's first pass with
+  ///   fixed borders would defer about half of its round before turning to locks (see
+  ///   builder.cpp). Double torus (bench_seed, 5 pairs, steal gap 256 in both): Delaunay
+  ///   0.425 / 0.358 / 0.354 / 0.377 / 0.373 -> 0.324 / 0.319 / 0.324 / 0.360 / 0.355 s
+  ///   (that round alone, rstruct delaunay, 4 pairs: 0.091 / 0.059 / 0.064 / 0.063 ->
+  ///   0.049 / 0.042 / 0.046 / 0.051 s); level 1's regular triangulation 0.400 / 0.366 /
+  ///   0.381 / 0.410 / 0.402 -> 0.351 / 0.374 / 0.373 / 0.391 / 0.411 s;
+  /// - BRIO rounds of 1/16 instead of 1/4 (a last round of 15/16 of the points along the
+  ///   curve: shorter walks, the cavities about as large). 10^6-sample torus (bench_seed
+  ///   --torus 1000000, 4 interleaved pairs): Delaunay 6.34 / 6.09 / 6.09 / 6.38 -> 5.34 /
+  ///   5.65 / 5.89 / 5.76 s; 5 more interleaved rounds, medians: 1/4 5.96, 1/8 5.69, 1/16
+  ///   5.58, 1/32 5.80 s. Double torus (5 pairs, medians): Delaunay 0.288 -> 0.282 s,
+  ///   level 1's regular triangulation 0.311 -> 0.293 s.
+  static TriangulationOptions for_surface_points(unsigned threads) {
+    TriangulationOptions o;
+    o.threads = threads;
+    o.parallel_scheme = ParallelScheme::locks;
+    o.brio_divisor = 16;
+    return o;
+  }
 };
 
 /// Counts and seconds of the construction.
