@@ -13,10 +13,12 @@
 // Columns: case, points, vertices, finite cells, hidden+merged, sort s, insertion s,
 // total wall and CPU s, bytes per point (peak RSS minus RSS before the points were generated, so the
 // input points, which the triangulation owns, are included), walk steps and conflict
-// cells per point, and the share of predicate calls that reached the exact stage (neither
-// the filter nor, for the in-sphere and power tests, the dynamic filter could decide; only
-// in a build with -Dcounters=true), and the share of points the parallel passes deferred to
-// the sequential one.
+// cells per point, the filter's failure rate (the share of the conflict search's insphere /
+// power tests on finite cells that the almost-static filter's floating-point stages left
+// undecided: TriangulationStats::filter_misses), the share of predicate calls that reached
+// the exact stage (neither the filter nor, for the in-sphere and power tests, the dynamic
+// filter could decide; only in a build with -Dcounters=true, otherwise n/a), and the share
+// of points the parallel passes deferred to the sequential one.
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -41,7 +43,7 @@ using rstruct::triangulation::RegularTriangulation3;
 
 struct Result {
   double points, vertices, cells, removed, sort_s, insert_s, total_s, cpu_s, bytes_per_point,
-      walk_per_point, conflict_per_point, filter_failure, deferred;
+      walk_per_point, conflict_per_point, filter_misses, filter_failure, deferred;
 };
 
 /// CPU seconds of this process: on a loaded machine the wall clock also counts the time
@@ -135,6 +137,9 @@ Result run_case(const std::string& name, std::size_t n, std::uint64_t seed) {
           (peak - static_cast<double>(before)) / dn,
           static_cast<double>(s.walk_steps) / dn,
           static_cast<double>(s.conflict_cells) / dn,
+          s.power_test_calls == 0 ? 0.0
+                                  : static_cast<double>(s.filter_misses) /
+                                        static_cast<double>(s.power_test_calls),
           filter_failure_rate(),
           static_cast<double>(s.deferred_points) / dn};
 }
@@ -185,12 +190,12 @@ void bench(const std::string& name, std::size_t n, int runs) {
     for (const Result& x : rs) v.push_back(x.*f);
     return median(v);
   };
-  std::printf("%-9s %10zu %10.0f %11.0f %8.0f %7.3f %7.3f %7.3f %7.3f %7.1f %6.2f %6.2f",
+  std::printf("%-9s %10zu %10.0f %11.0f %8.0f %7.3f %7.3f %7.3f %7.3f %7.1f %6.2f %6.2f %9.2e",
               name.c_str(), n, med(&Result::vertices), med(&Result::cells),
               med(&Result::removed), med(&Result::sort_s), med(&Result::insert_s),
               med(&Result::total_s), med(&Result::cpu_s),
               med(&Result::bytes_per_point), med(&Result::walk_per_point),
-              med(&Result::conflict_per_point));
+              med(&Result::conflict_per_point), med(&Result::filter_misses));
   const double f = med(&Result::filter_failure);
   if (f >= 0) {
     std::printf(" %9.2e", f);
@@ -249,9 +254,9 @@ int main(int argc, char** argv) {
   }
   std::printf("# medians of %d runs, %u insertion thread(s); the machine may be loaded by other jobs\n",
               runs, g_threads);
-  std::printf("%-9s %10s %10s %11s %8s %7s %7s %7s %7s %7s %6s %6s %9s %7s\n", "case", "points",
-              "vertices", "fin.cells", "removed", "sort_s", "ins_s", "total_s", "cpu_s",
-              "B/pt", "walk", "confl", "filt.fail", "defer");
+  std::printf("%-9s %10s %10s %11s %8s %7s %7s %7s %7s %7s %6s %6s %9s %9s %7s\n", "case",
+              "points", "vertices", "fin.cells", "removed", "sort_s", "ins_s", "total_s",
+              "cpu_s", "B/pt", "walk", "confl", "filt.miss", "exact", "defer");
   const auto want = [&](const char* c) { return only.empty() || only == c; };
   if (want("uniform")) {
     for (double n = 1e4; n <= max * 1.0001; n *= 10) bench("uniform", std::size_t(n), runs);

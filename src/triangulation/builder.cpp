@@ -645,6 +645,7 @@ std::vector<VertexId> Builder::parallel_pass(const std::array<std::vector<Vertex
     s.conflict_cells += b.own_stats_.conflict_cells;
     s.orient_calls += b.own_stats_.orient_calls;
     s.power_test_calls += b.own_stats_.power_test_calls;
+    s.filter_misses += b.own_stats_.filter_misses;
     s.large_cavities += b.own_stats_.large_cavities;
     s.taken_points += b.own_stats_.taken_points;
     b.own_stats_ = {};
@@ -1277,6 +1278,7 @@ bool Builder::in_conflict_general(CellId c, VertexId p) {
   const int inf = t_.infinite_index(c);
   if (inf < 0) {
     // in_conflict() tried both filter stages on this finite cell.
+    ++stats_->filter_misses;
     if (weights_ == nullptr) {
       // A Delaunay vertex is removed only by a point with its exact coordinates; the
       // filter never decides such a test (the point's row of differences is zero, so the

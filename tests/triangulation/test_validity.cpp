@@ -94,6 +94,21 @@ TEST_CASE("10^3 grid, cospherical sets and duplicates end valid") {
   }
 }
 
+TEST_CASE("the filter's failures are counted: many on a grid, few on random points") {
+  // A grid's cospherical cells give insphere determinants of exactly zero, which no
+  // floating-point filter decides; random points almost never come that close.
+  const RegularTriangulation3 grid(rstruct::test::grid_points(10, 10, 10));
+  const auto& g = grid.stats();
+  INFO("grid: " << g.filter_misses << " of " << g.power_test_calls);
+  CHECK(g.filter_misses > g.power_test_calls / 10);
+  CHECK(g.filter_misses <= g.power_test_calls);
+  const RegularTriangulation3 random(rstruct::test::uniform_points(5000, 3));
+  const auto& r = random.stats();
+  INFO("random: " << r.filter_misses << " of " << r.power_test_calls);
+  CHECK(r.power_test_calls > 5000);
+  CHECK(r.filter_misses < r.power_test_calls / 1000);
+}
+
 TEST_CASE("duplicates: the larger weight wins") {
   std::vector<Point3> p = rstruct::test::grid_points(2, 2, 2);
   p.push_back(p[3]);

@@ -202,6 +202,11 @@ struct TriangulationStats {
   std::uint64_t conflict_cells = 0;      ///< cells destroyed by insertions (total)
   std::uint64_t orient_calls = 0;        ///< orient3d calls of the walk
   std::uint64_t power_test_calls = 0;    ///< insphere / power tests of the conflict search
+  /// Those of them on finite cells that the almost-static filter's two floating-point
+  /// stages left undecided (the dynamic filter, the exact stage and the perturbation then
+  /// decide): the filter's failures, counted in every build (the predicate counters of
+  /// -Dcounters=true also tell which later stage decided).
+  std::uint64_t filter_misses = 0;
   std::uint64_t large_cavities = 0;      ///< cavities with more than 127 boundary vertices (hashed linking)
   unsigned threads = 1;                  ///< threads that inserted points
   std::uint64_t parallel_points = 0;     ///< points processed by the parallel passes
