@@ -43,7 +43,7 @@ using rstruct::triangulation::RegularTriangulation3;
 
 struct Result {
   double points, vertices, cells, removed, sort_s, insert_s, total_s, cpu_s, bytes_per_point,
-      walk_per_point, conflict_per_point, filter_misses, filter_failure, deferred;
+      walk_per_point, conflict_per_point, filter_misses, exact_share, deferred;
 };
 
 /// CPU seconds of this process: on a loaded machine the wall clock also counts the time
@@ -81,7 +81,7 @@ std::vector<Point3> torus(std::size_t n, std::uint64_t seed) {
   return p;
 }
 
-double filter_failure_rate() {
+double exact_stage_share() {
   namespace pr = rstruct::predicates;
   if (!pr::counters_enabled()) return -1;
   std::uint64_t all = 0;
@@ -140,7 +140,7 @@ Result run_case(const std::string& name, std::size_t n, std::uint64_t seed) {
           s.power_test_calls == 0 ? 0.0
                                   : static_cast<double>(s.filter_misses) /
                                         static_cast<double>(s.power_test_calls),
-          filter_failure_rate(),
+          exact_stage_share(),
           static_cast<double>(s.deferred_points) / dn};
 }
 
@@ -196,7 +196,7 @@ void bench(const std::string& name, std::size_t n, int runs) {
               med(&Result::total_s), med(&Result::cpu_s),
               med(&Result::bytes_per_point), med(&Result::walk_per_point),
               med(&Result::conflict_per_point), med(&Result::filter_misses));
-  const double f = med(&Result::filter_failure);
+  const double f = med(&Result::exact_share);
   if (f >= 0) {
     std::printf(" %9.2e", f);
   } else {

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <utility>
 
 #include "generators.hpp"
 #include "rstruct/triangulation/regular_triangulation_3.hpp"
@@ -20,6 +21,7 @@ using rstruct::Point3;
 using rstruct::test::cell_set;
 using rstruct::triangulation::RegularTriangulation3;
 using rstruct::triangulation::TriangulationOptions;
+using rstruct::triangulation::TriangulationStats;
 
 using rstruct::test::Input;
 using rstruct::test::torus_points;
@@ -82,8 +84,10 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicate_pairs(const Regul
   return pairs;
 }
 
-/// Compares the parallel construction with the sequential one.
-void check_same(const Input& in, unsigned threads, std::size_t min_round) {
+/// Compares the parallel construction with the sequential one; returns both statistics
+/// (sequential, parallel).
+std::pair<TriangulationStats, TriangulationStats> check_same(const Input& in, unsigned threads,
+                                                             std::size_t min_round) {
   const RegularTriangulation3 one = build(in, 1, min_round);
   const RegularTriangulation3 many = build(in, threads, min_round);
   const auto report = many.is_valid();
@@ -97,6 +101,7 @@ void check_same(const Input& in, unsigned threads, std::size_t min_round) {
   const auto& s = many.stats();
   CHECK(s.threads == std::min(threads, 8u));
   CHECK(s.parallel_points > 0);  // (how many, with locks, depends on timing)
+  return {one.stats(), s};
 }
 
 }  // namespace
@@ -108,13 +113,10 @@ TEST_CASE("parallel insertion: uniform points, two and three threads") {
 }
 
 TEST_CASE("parallel insertion: a grid (cospherical everywhere)") {
-  const Input in{rstruct::test::grid_points(32, 32, 32), {}};
-  check_same(in, 2, 2000);
+  const auto [one, two] = check_same({rstruct::test::grid_points(32, 32, 32), {}}, 2, 2000);
   // The workers' filter failures (every cospherical cell's test) are added to the totals:
   // nearly every point goes through a worker, so the total is close to the sequential
   // run's (1.02 times it; counting only the main thread's, 0.53).
-  const auto one = build(in, 1, 2000).stats();
-  const auto two = build(in, 2, 2000).stats();
   INFO("filter misses: one thread " << one.filter_misses << ", two " << two.filter_misses
                                     << ", parallel points " << two.parallel_points);
   CHECK(one.filter_misses > 0);
