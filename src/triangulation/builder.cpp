@@ -32,17 +32,22 @@ constexpr int kOther[4][4][2] = {
     {{1, 3}, {0, 3}, {-1, -1}, {0, 1}},
     {{1, 2}, {0, 2}, {0, 1}, {-1, -1}},
 };
-/// kOthers[i]: the three indices of {0, 1, 2, 3} other than i, increasing.
-constexpr int kOthers[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
-/// kDirected[i][j] = (a, b): facet j of a positively oriented cell, counter-clockwise seen
-/// from outside the cell and rotated to start at vertex i, is (i, a, b). The cell across
-/// that facet sees it clockwise, as (i, b, a): directed edges pair up reversed.
-constexpr int kDirected[4][4][2] = {
-    {{-1, -1}, {3, 2}, {1, 3}, {2, 1}},
-    {{2, 3}, {-1, -1}, {3, 0}, {0, 2}},
-    {{3, 1}, {0, 3}, {-1, -1}, {1, 0}},
-    {{1, 2}, {2, 0}, {0, 1}, {-1, -1}},
-};
+/// kFacetOrder[i]: the three indices of {0, 1, 2, 3} other than i, in an order that makes
+/// (i, kFacetOrder[i][0], kFacetOrder[i][1], kFacetOrder[i][2]) an even permutation: a
+/// cell with vertex i replaced by p and moved to slot 0 keeps its orientation.
+constexpr int kFacetOrder[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
+constexpr bool even_permutation(const int (&v)[4]) {
+  int inversions = 0;
+  for (int a = 0; a < 4; ++a) {
+    for (int b = a + 1; b < 4; ++b) inversions += v[a] > v[b] ? 1 : 0;
+  }
+  return inversions % 2 == 0;
+}
+static_assert(even_permutation({0, kFacetOrder[0][0], kFacetOrder[0][1], kFacetOrder[0][2]}) &&
+              even_permutation({1, kFacetOrder[1][0], kFacetOrder[1][1], kFacetOrder[1][2]}) &&
+              even_permutation({2, kFacetOrder[2][0], kFacetOrder[2][1], kFacetOrder[2][2]}) &&
+              even_permutation({3, kFacetOrder[3][0], kFacetOrder[3][1], kFacetOrder[3][2]}));
 
 /// Exact orientation of the projection of a, b, c on the coordinate plane (axis0, axis1),
 /// through orient3d on exactly representable lifted points (the projections with third
@@ -897,6 +902,7 @@ void Builder::keep_cell_locks(CellId c) {
   locked_.resize(kept);
   kept_locks_ = kept;
   star_.assign(1, c);
+  star_numbered_ = false;
   last_ = c;
   star_is_latest_ = true;
 }
@@ -1374,10 +1380,33 @@ void Builder::record_hidden(VertexId p, CellId c) {
 // nearest centroid 1.2 and 22.3 (torus insertion 2.95 -> 2.64 s, medians of 5 interleaved
 // runs; uniform unchanged within the noise). The star's cells and
 // points were just written or tested, so the scan runs in cache.
-CellId Builder::nearest_star_cell(const Point3& q, CellId fallback) const {
+// When the star is the latest insertion's with its boundary numbered (build_star), the
+// differences v - q are computed once per boundary vertex (the infinite vertex's are
+// +inf, so its cells never win) and each cell adds its three and p's: about half the
+// operations of four points' coordinates per cell.
+CellId Builder::nearest_star_cell(const Point3& q, CellId fallback) {
   const auto& cells = t_.cells_;
   CellId best = fallback;
   double best_distance = std::numeric_limits<double>::infinity();
+  if (star_numbered_) {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    Point3* offset = star_offsets_.data();
+    offset[0] = Point3{kInf, kInf, kInf};
+    for (std::size_t k = 0; k < local_vertices_.size(); ++k) {
+      offset[k + 1] = points_[local_vertices_[k]] - q;
+    }
+    const Point3 center = points_[cells[star_.front()].v[0]] - q;  // p, in every cell
+    for (std::size_t s = 0; s < star_.size(); ++s) {
+      const Point3 d = center + offset[star_local_[s][0]] + offset[star_local_[s][1]] +
+                       offset[star_local_[s][2]];
+      const double d2 = d.x * d.x + d.y * d.y + d.z * d.z;
+      if (d2 < best_distance) {
+        best_distance = d2;
+        best = star_[s];
+      }
+    }
+    return best;
+  }
   for (const CellId n : star_) {
     const Cell& k = cells[n];
     if ((k.v[0] == kInfiniteVertex) | (k.v[1] == kInfiniteVertex) |
@@ -1479,49 +1508,56 @@ bool Builder::find_conflict_region_impl(CellId start, VertexId p) {
 
 // One new cell per boundary facet (the facet joined to p), linked to the cell outside the
 // cavity; the new cells are linked among themselves through the edge table (link_star).
+// Every new cell is (p, a, b, c): p in slot 0, so that its facet 0 is the boundary facet and
+// facets 1, 2, 3 are the ones through p, whatever the facet's index in the conflict cell
+// (a, b, c in the order of kFacetOrder keep the orientation).
 //
 // The new cells' facets through p pair up along the edges of the cavity boundary, a
 // triangulated sphere in which every edge lies in exactly two facets with opposite
-// directions. With the boundary's vertices numbered 1..kLocal-1 (the infinite vertex 0),
-// facet j of new cell n is written at slot [a][b] of the edge table while the cell is
-// built, and finds its partner at [b][a] afterwards: no search, no branch. Larger
-// cavities (degenerate input) use a hash table.
+// directions. Seen from outside a positively oriented cell (p, a, b, c), its facets 1, 2
+// and 3 run counter-clockwise as (p, c, b), (p, a, c) and (p, b, a); the cell across each
+// sees the same facet clockwise. With the boundary's vertices numbered 1..kLocal-1 (the
+// infinite vertex 0), facet j of new cell n is written at slot [c][b], [a][c] or [b][a] of
+// the edge table while the cell is built, and finds its partner at the reversed slot
+// afterwards: no search, no branch. Larger cavities (degenerate input) use a hash table.
 void Builder::build_star(VertexId p) {
   auto& cells = t_.cells_;
   const std::size_t m = boundary_.size();
   star_.resize(m);
-  star_partner_slot_.resize(m);
+  star_local_.resize(m);
   local_vertices_.clear();
   local_vertices_.make_room(kLocal);  // local_number's pushes
   for (std::size_t s = 0; s < m; ++s) {
-    const BoundaryFacet& b = boundary_[s];
+    const BoundaryFacet& f = boundary_[s];
     const CellId n = new_cell();
-    Cell& k = cells[n];
-    const Cell& x = cells[b.cell];
-    const int i = b.index;
+    const Cell& x = cells[f.cell];
+    const int i = f.index;
     const std::uint32_t out = x.n[i];
-    std::array<std::uint8_t, 4> local{};
-    for (int j = 0; j < 4; ++j) {
-      k.v[j] = x.v[j];
-      local[static_cast<std::size_t>(j)] = j == i ? 0 : local_number(x.v[j]);
-    }
-    k.v[i] = p;
-    k.n[i] = out;
-    cells[out >> 2].n[out & 3u] = n << 2 | static_cast<std::uint32_t>(i);
-    std::array<std::uint16_t, 4>& partner = star_partner_slot_[s];
-    for (int t = 0; t < 3; ++t) {
-      const int j = kOthers[i][t];
-      const std::size_t a = local[static_cast<std::size_t>(kDirected[i][j][0])];
-      const std::size_t c = local[static_cast<std::size_t>(kDirected[i][j][1])];
-      edge_faces_[a * kLocal + c] = n << 2 | static_cast<std::uint32_t>(j);
-      partner[static_cast<std::size_t>(j)] = static_cast<std::uint16_t>(c * kLocal + a);
-    }
+    const VertexId a = x.v[kFacetOrder[i][0]];
+    const VertexId b = x.v[kFacetOrder[i][1]];
+    const VertexId c = x.v[kFacetOrder[i][2]];
+    Cell& k = cells[n];
+    k.v[0] = p;
+    k.v[1] = a;
+    k.v[2] = b;
+    k.v[3] = c;
+    k.n[0] = out;
+    cells[out >> 2].n[out & 3u] = n << 2;
+    const std::size_t la = local_number(a);
+    const std::size_t lb = local_number(b);
+    const std::size_t lc = local_number(c);
+    edge_faces_[lc * kLocal + lb] = n << 2 | 1u;
+    edge_faces_[la * kLocal + lc] = n << 2 | 2u;
+    edge_faces_[lb * kLocal + la] = n << 2 | 3u;
+    star_local_[s] = {static_cast<std::uint8_t>(la), static_cast<std::uint8_t>(lb),
+                      static_cast<std::uint8_t>(lc)};
     star_[s] = n;
   }
   link_star();
   last_ = star_.front();
   if (star_cell_ != nullptr) star_cell_[p] = last_;
   star_is_latest_ = true;
+  star_numbered_ = local_vertices_.size() < kLocal - 1;
 }
 
 void Builder::link_star() {
@@ -1534,13 +1570,13 @@ void Builder::link_star() {
   auto& cells = t_.cells_;
   const std::size_t m = star_.size();
   for (std::size_t s = 0; s < m; ++s) {
-    const CellId n = star_[s];
-    const int i = boundary_[s].index;  // p's index in n
-    const std::array<std::uint16_t, 4>& partner = star_partner_slot_[s];
-    for (int t = 0; t < 3; ++t) {
-      const int j = kOthers[i][t];
-      cells[n].n[j] = edge_faces_[partner[static_cast<std::size_t>(j)]];
-    }
+    Cell& k = cells[star_[s]];
+    const std::size_t la = star_local_[s][0];
+    const std::size_t lb = star_local_[s][1];
+    const std::size_t lc = star_local_[s][2];
+    k.n[1] = edge_faces_[lb * kLocal + lc];
+    k.n[2] = edge_faces_[lc * kLocal + la];
+    k.n[3] = edge_faces_[la * kLocal + lb];
   }
 }
 
@@ -1558,11 +1594,9 @@ void Builder::link_star_hashed() {
   const int shift = 64 - std::countr_zero(edge_table_.size());
   for (std::size_t s = 0; s < star_.size(); ++s) {
     const CellId n = star_[s];
-    const int i = boundary_[s].index;  // p's index in n
-    for (int j = 0; j < 4; ++j) {
-      if (j == i) continue;
-      const int k = kOther[i][j][0];
-      const int l = kOther[i][j][1];
+    for (int j = 1; j < 4; ++j) {  // the facets through p, in slot 0
+      const int k = kOther[0][j][0];
+      const int l = kOther[0][j][1];
       const VertexId a = cells[n].v[k];
       const VertexId b = cells[n].v[l];
       const std::uint64_t key = a < b ? (std::uint64_t{a} << 32 | b) : (std::uint64_t{b} << 32 | a);

@@ -178,7 +178,7 @@ class Builder {
   /// p is hidden, found in cell c.
   void record_hidden(VertexId p, CellId c);
   /// The finite cell of star_ whose centroid is nearest to q (fallback if none).
-  CellId nearest_star_cell(const Point3& q, CellId fallback) const;
+  CellId nearest_star_cell(const Point3& q, CellId fallback);
   /// Whether cell c conflicts with p (perturbed power test; insphere when unweighted).
   /// The common case, a finite cell decided by the filter, is inline (always: the conflict
   /// search calls it for every cell it visits); everything else goes to
@@ -277,9 +277,13 @@ class Builder {
   ScratchList<CellId> outside_;
   ScratchList<BoundaryFacet> boundary_;
   std::vector<CellId> star_;                // new cell of boundary_[k]
-  /// For new cell star_[k] and each facet j through p: the edge table slot of the
-  /// opposite direction, where the neighbour across facet j wrote itself.
-  std::vector<std::array<std::uint16_t, 4>> star_partner_slot_;
+  /// The boundary numbers of new cell star_[k]'s vertices 1, 2, 3 (p is vertex 0).
+  std::vector<std::array<std::uint8_t, 3>> star_local_;
+  /// Whether star_ and star_local_ are build_star's, with every boundary vertex numbered
+  /// (local_vertices_ still lists them): nearest_star_cell's shortcut.
+  bool star_numbered_ = false;
+  /// nearest_star_cell's scratch: boundary vertex k's coordinates minus the query.
+  std::vector<Point3> star_offsets_ = std::vector<Point3>(kLocal);
   struct EdgeSlot {
     std::uint64_t key;    // the edge's two vertex ids, smaller first
     std::uint32_t face;   // new cell << 2 | facet index

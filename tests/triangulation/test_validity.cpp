@@ -3,6 +3,7 @@
 #include <rapidcheck/catch.h>
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <numeric>
 
 #include "generators.hpp"
@@ -107,6 +108,25 @@ TEST_CASE("the filter's failures are counted: many on a grid, few on random poin
   INFO("random: " << r.filter_misses << " of " << r.power_test_calls);
   CHECK(r.power_test_calls > 5000);
   CHECK(r.filter_misses < r.power_test_calls / 1000);
+}
+
+TEST_CASE("each walk starts next to its point: about one step per point on random points") {
+  // The walk starts in the previous star's cell with the centroid nearest to the point
+  // (Builder::nearest_star_cell); from an arbitrary cell of that star it took about 5.6
+  // steps per point, from the nearest about 1.1.
+  const std::size_t n = 20000;
+  const RegularTriangulation3 plain(rstruct::test::uniform_points(n, 11));
+  INFO("Delaunay: " << plain.stats().walk_steps << " steps");
+  CHECK(plain.stats().walk_steps < 2 * n);
+  // Weights up to (0.8 x mean spacing)^2, as in bench_triangulation: a few percent hidden.
+  const double spacing = std::cbrt(1.0 / static_cast<double>(n));
+  const RegularTriangulation3 weighted(
+      rstruct::test::uniform_points(n, 12),
+      rstruct::test::hiding_weights(n, 0.64 * spacing * spacing, 13));
+  INFO("hidden: " << weighted.hidden_points().size());
+  CHECK(weighted.hidden_points().size() > n / 200);
+  INFO("weighted: " << weighted.stats().walk_steps << " steps");
+  CHECK(weighted.stats().walk_steps < 2 * n);
 }
 
 TEST_CASE("duplicates: the larger weight wins") {
