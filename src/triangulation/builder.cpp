@@ -1040,6 +1040,12 @@ void Builder::restore_input_order() {
     std::size_t current = r;
     do {
       const std::size_t next = order[current];
+      // The cycle is a chain of dependent loads of order[]; the point two steps ahead is
+      // fetched meanwhile (without it the loop waited for memory at every step: 10^6
+      // points, 3.7 % of the whole run's samples on that one load).
+      const std::size_t after = order[next];
+      __builtin_prefetch(&t_.points_[after]);
+      if (weights_ != nullptr) __builtin_prefetch(&t_.weights_[after]);
       std::swap(point, t_.points_[next]);
       if (weights_ != nullptr) std::swap(weight, t_.weights_[next]);
       placed[next] = true;
