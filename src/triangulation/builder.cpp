@@ -1395,6 +1395,20 @@ CellId Builder::nearest_star_cell(const Point3& q, CellId fallback) {
   CellId best = fallback;
   double best_distance = std::numeric_limits<double>::infinity();
   if (star_numbered_) {
+    if constexpr (check_level() >= 2) {
+      // star_local_ must still describe star_ (keep_cell_locks replaces star_ and clears
+      // the flag): every cell (p, a, b, c) with a, b, c numbered as listed.
+      RSTRUCT_ASSERT(star_local_.size() == star_.size());
+      for (std::size_t s = 0; s < star_.size(); ++s) {
+        const Cell& k = cells[star_[s]];
+        RSTRUCT_ASSERT(k.v[0] == cells[star_.front()].v[0]);
+        for (std::size_t j = 0; j < 3; ++j) {
+          const std::size_t number = star_local_[s][j];
+          RSTRUCT_ASSERT(k.v[j + 1] ==
+                         (number == 0 ? kInfiniteVertex : local_vertices_[number - 1]));
+        }
+      }
+    }
     constexpr double kInf = std::numeric_limits<double>::infinity();
     Point3* offset = star_offsets_.data();
     offset[0] = Point3{kInf, kInf, kInf};
