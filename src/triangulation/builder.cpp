@@ -1390,6 +1390,8 @@ void Builder::record_hidden(VertexId p, CellId c) {
 // differences v - q are computed once per boundary vertex (the infinite vertex's are
 // +inf, so its cells never win) and each cell adds its three and p's instead of reading
 // four points (10^5 uniform points: 1,736 -> 1,149 instructions per point, callgrind).
+// The minimum is kept in two lanes (10^6 uniform points: perf samples of this function
+// 619 / 692 -> 487 / 443 at 4 kHz; four lanes took twice as many as one).
 CellId Builder::nearest_star_cell(const Point3& q, CellId fallback) {
   const auto& cells = t_.cells_;
   CellId best = fallback;
@@ -1416,14 +1418,45 @@ CellId Builder::nearest_star_cell(const Point3& q, CellId fallback) {
       offset[k + 1] = points_[local_vertices_[k]] - q;
     }
     const Point3 center = points_[cells[star_.front()].v[0]] - q;  // p, in every cell
-    for (std::size_t s = 0; s < star_.size(); ++s) {
+    const auto distance = [&](std::size_t s) {
       const Point3 d = center + offset[star_local_[s][0]] + offset[star_local_[s][1]] +
                        offset[star_local_[s][2]];
-      const double d2 = d.x * d.x + d.y * d.y + d.z * d.z;
-      if (d2 < best_distance) {
-        best_distance = d2;
-        best = star_[s];
+      return d.x * d.x + d.y * d.y + d.z * d.z;
+    };
+    // Two running minima, of the even and of the odd cells, merged at the end (the first
+    // of equal distances wins, as in one pass): each one's chain of comparisons is half
+    // as long, and the start cell is waited for.
+    const std::size_t m = star_.size();
+    double even = best_distance, odd = best_distance;
+    std::size_t even_at = 0, odd_at = 1;
+    std::size_t s = 0;
+    for (; s + 1 < m; s += 2) {
+      const double de = distance(s);
+      const double dd = distance(s + 1);
+      even_at = de < even ? s : even_at;
+      even = de < even ? de : even;
+      odd_at = dd < odd ? s + 1 : odd_at;
+      odd = dd < odd ? dd : odd;
+    }
+    if (s < m) {
+      const double de = distance(s);
+      even_at = de < even ? s : even_at;
+      even = de < even ? de : even;
+    }
+    const bool take_odd = odd < even || (odd == even && odd_at < even_at);
+    const double d2 = take_odd ? odd : even;
+    if (d2 < best_distance) best = star_[take_odd ? odd_at : even_at];
+    if constexpr (check_level() >= 2) {
+      // The same cell as one pass over the star.
+      CellId first = fallback;
+      double nearest = best_distance;
+      for (std::size_t t = 0; t < m; ++t) {
+        if (distance(t) < nearest) {
+          nearest = distance(t);
+          first = star_[t];
+        }
       }
+      RSTRUCT_ASSERT(first == best);
     }
     return best;
   }
