@@ -1016,7 +1016,8 @@ void Builder::permute_to_insertion_order() {
 }
 
 // Back to input ids: cell vertices and hidden records are renamed through order_, and the
-// points (and weights) are permuted in place, cycle by cycle, so no second copy is needed.
+// points (and weights) are permuted in place (permute_points_to_input_order), so no second
+// copy is needed.
 void Builder::restore_input_order() {
   const std::vector<VertexId>& order = t_.order_;
   Cell* const cells = t_.cells_.data();
@@ -1031,7 +1032,79 @@ void Builder::restore_input_order() {
                     }
                   });
   for (HiddenPoint& h : raw_hidden_) h.point = order[h.point];
-  std::vector<bool> placed(order.size(), false);
+  permute_points_to_input_order();
+  points_ = t_.points_.data();
+  weights_ = weights_ != nullptr ? t_.weights_.data() : nullptr;
+  reorder_ = false;
+}
+
+// The point at rank r moves to position order[r], along the permutation's cycles. Following
+// one cycle is a chain of dependent loads of order[] (a random permutation for points given
+// in random order: 10^6 points, about 60 ns per step, memory latency). So the cycles are cut
+// into segments at evenly spaced ranks (their points put aside first), and kLanes segments
+// are followed at once, one step of each in turn: each lane's loads wait, but the lanes'
+// waits overlap. A lane ends its segment at the next start it meets (whose point was put
+// aside, so that position takes the lane's point) and then takes the next segment. Cycles
+// without a start (short ones) are followed one by one afterwards. 10^6 points, perf
+// samples (4 kHz) of restore_input_order, which did this one cycle at a time (the point
+// two steps ahead prefetched): uniform 490 / 397 -> 172 / 168 with 8 lanes, weighted
+// 554 / 668 -> 211 / 226; 16 lanes took 7-30 % fewer samples than 8 in this function.
+void Builder::permute_points_to_input_order() {
+  const std::vector<VertexId>& order = t_.order_;
+  const std::size_t n = order.size();
+  Point3* const points = t_.points_.data();
+  double* const weights = weights_ != nullptr ? t_.weights_.data() : nullptr;
+  std::vector<bool> placed(n, false);
+  constexpr std::size_t kLanes = 16;
+  // Ranks between two segment starts: 1,024 (10^6 points: 977 starts), fewer below 65,536
+  // points (64 starts), so that every input takes this path.
+  const std::size_t spacing = std::clamp<std::size_t>(n / 64, 1, 1024);
+  const std::size_t starts = (n + spacing - 1) / spacing;
+  std::vector<bool> is_start(n, false);
+  struct Carried {
+    Point3 point;
+    double weight;
+    std::size_t at;  // its position: the current step's source
+  };
+  std::vector<Carried> start_points(starts);
+  for (std::size_t j = 0; j < starts; ++j) {
+    const std::size_t s = j * spacing;
+    is_start[s] = true;
+    start_points[j] = {points[s], weights != nullptr ? weights[s] : 0.0, s};
+  }
+  Carried lane[kLanes];
+  bool active[kLanes];
+  std::size_t taken = 0;
+  std::size_t running = 0;
+  for (std::size_t l = 0; l < kLanes; ++l) {
+    active[l] = taken < starts;
+    if (active[l]) {
+      lane[l] = start_points[taken++];
+      ++running;
+    }
+  }
+  while (running > 0) {
+    for (std::size_t l = 0; l < kLanes; ++l) {
+      if (!active[l]) continue;
+      Carried& c = lane[l];
+      const std::size_t next = order[c.at];
+      placed[next] = true;
+      if (is_start[next]) [[unlikely]] {
+        points[next] = c.point;
+        if (weights != nullptr) weights[next] = c.weight;
+        active[l] = taken < starts;
+        if (active[l]) {
+          lane[l] = start_points[taken++];
+        } else {
+          --running;
+        }
+        continue;
+      }
+      std::swap(c.point, points[next]);
+      if (weights != nullptr) std::swap(c.weight, weights[next]);
+      c.at = next;
+    }
+  }
   for (std::size_t r = 0; r < order.size(); ++r) {
     if (placed[r]) continue;
     // The point at rank r belongs at position order[r]; follow the cycle.
@@ -1052,9 +1125,6 @@ void Builder::restore_input_order() {
       current = next;
     } while (current != r);
   }
-  points_ = t_.points_.data();
-  weights_ = weights_ != nullptr ? t_.weights_.data() : nullptr;
-  reorder_ = false;
 }
 
 // The canonical order: cells by their smallest vertex id, then by their other vertex ids

@@ -76,6 +76,8 @@ class Builder {
   void permute_to_insertion_order();
   void reserve_for_projection(std::size_t k, std::size_t n, double margin);
   void restore_input_order();
+  /// restore_input_order's permutation of the points (and weights): rank r to order_[r].
+  void permute_points_to_input_order();
   /// Vertex id of the k-th point inserted.
   VertexId vertex_at(std::size_t k) const {
     return reorder_ ? static_cast<VertexId>(k) : t_.order_[k];

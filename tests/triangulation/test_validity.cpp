@@ -129,6 +129,35 @@ TEST_CASE("each walk starts next to its point: about one step per point on rando
   CHECK(weighted.stats().walk_steps < 2 * n);
 }
 
+TEST_CASE("the points and weights come back in input order") {
+  // The construction stores the points in insertion order and permutes them back at the
+  // end, several segments of the permutation's cycles at a time
+  // (Builder::permute_points_to_input_order; segment starts every n/64 ranks, at most
+  // 1,024 apart, so 70,000 points take the widest spacing).
+  for (const std::size_t n : {std::size_t{5}, std::size_t{97}, std::size_t{3000},
+                              std::size_t{70000}}) {
+    INFO("n = " << n);
+    const std::vector<Point3> points = rstruct::test::uniform_points(n, 21 + n);
+    const std::vector<double> weights = rstruct::test::hiding_weights(n, 1e-4, 22 + n);
+    const RegularTriangulation3 plain(points);
+    const RegularTriangulation3 weighted(points, weights);
+    std::size_t wrong_points = 0;
+    std::size_t wrong_weights = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto v = static_cast<VertexId>(i);
+      wrong_points += plain.point(v) == points[i] ? 0 : 1;
+      wrong_points += weighted.point(v) == points[i] ? 0 : 1;
+      wrong_weights += weighted.weight(v) == weights[i] ? 0 : 1;
+    }
+    CHECK(wrong_points == 0);
+    CHECK(wrong_weights == 0);
+    if (n <= 3000) {
+      CHECK(plain.is_valid());
+      CHECK(weighted.is_valid());
+    }
+  }
+}
+
 TEST_CASE("duplicates: the larger weight wins") {
   std::vector<Point3> p = rstruct::test::grid_points(2, 2, 2);
   p.push_back(p[3]);
