@@ -226,8 +226,10 @@ void Builder::run() {
   if (options_.canonical_order || (options_.canonical_order_after_locks && took_locks_)) {
     canonicalize_cells();
   }
-  t_.order_.clear();
-  t_.order_.shrink_to_fit();
+  // order_'s memory (4 bytes per point, touched) becomes the vertex index's, which would
+  // otherwise take fresh pages (finalize fills it).
+  t_.vertex_cell_ = std::move(t_.order_);
+  t_.order_ = {};
   t_.finalize(raw_hidden_);
   t_.stats_.insertion_seconds = clock.seconds();
 }
