@@ -5,11 +5,16 @@
 //
 // Usage: bench_triangulation [--runs R] [--max N] [--huge] [--case NAME] [--threads T]
 //                            [--scheme automatic|borders|locks] [--canonical] [--brio D]
+//                            [--warm-pages]
 //   --max N   largest uniform size of the ladder (default 1e6); --huge adds 1e7.
 //   --threads T  insertion threads (default 1, the targets are single-thread).
 //   --scheme S   how the parallel passes share the work (TriangulationOptions).
 //   --canonical  number the cells in the canonical order (counted in the insertion time).
 //   --brio D     BRIO rounds of 1/D (TriangulationOptions::brio_divisor, default 4).
+//   --warm-pages before every run, touch and free 800 bytes per point (at least 64 MiB) of
+//                transparent huge pages, so that the run's large blocks get pages that the
+//                VM's host has not taken back (this VM hands idle memory back: a cold cell
+//                array costs about 0.3 s at 10^6 points; bench/HISTORY.md, 2026-12-08).
 // Columns: case, points, vertices, finite cells, hidden+merged, sort s, insertion s,
 // total wall and CPU s, bytes per point (peak RSS minus RSS before the points were generated, so the
 // input points, which the triangulation owns, are included), walk steps and conflict
@@ -19,6 +24,7 @@
 // the exact stage (neither the filter nor, for the in-sphere and power tests, the dynamic
 // filter could decide; only in a build with -Dcounters=true, otherwise n/a), and the share
 // of points the parallel passes deferred to the sequential one.
+#include <sys/mman.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -144,8 +150,24 @@ Result run_case(const std::string& name, std::size_t n, std::uint64_t seed) {
           static_cast<double>(s.deferred_points) / dn};
 }
 
+bool g_warm_pages = false;
+
+/// Touches and frees `bytes` of transparent huge pages (--warm-pages).
+void warm_pages(std::size_t bytes) {
+  constexpr std::size_t kHuge = std::size_t{2} << 20;
+  void* raw = mmap(nullptr, bytes + kHuge, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS,
+                   -1, 0);
+  if (raw == MAP_FAILED) return;
+  const auto base = (reinterpret_cast<std::uintptr_t>(raw) + kHuge - 1) & ~(kHuge - 1);
+  volatile char* const p = reinterpret_cast<char*>(base);
+  (void)madvise(reinterpret_cast<void*>(base), bytes, MADV_HUGEPAGE);
+  for (std::size_t i = 0; i < bytes; i += 4096) p[i] = 1;
+  munmap(raw, bytes + kHuge);
+}
+
 // Runs one case in a child process; the result comes back through a pipe.
 bool run_forked(const std::string& name, std::size_t n, std::uint64_t seed, Result& out) {
+  if (g_warm_pages) warm_pages(std::max<std::size_t>(800 * n, std::size_t{64} << 20));
   int fd[2];
   if (pipe(fd) != 0) return false;
   const pid_t pid = fork();
@@ -235,6 +257,8 @@ int main(int argc, char** argv) {
       g_scheme = v == "borders" ? Scheme::borders
                  : v == "locks"   ? Scheme::locks
                                   : Scheme::automatic;
+    } else if (a == "--warm-pages") {
+      g_warm_pages = true;
     } else if (a == "--canonical") {
       g_canonical = true;
     } else if (a == "--brio" && i + 1 < argc) {
@@ -247,7 +271,8 @@ int main(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: %s [--runs R] [--max N] [--huge] [--case NAME] [--threads T] "
-                   "[--scheme automatic|borders|locks] [--canonical] [--brio D]\n",
+                   "[--scheme automatic|borders|locks] [--canonical] [--brio D] "
+                   "[--warm-pages]\n",
                    argv[0]);
       return 2;
     }
