@@ -65,7 +65,7 @@ TEST_CASE("the keys computed several at a time are the keys one at a time") {
 }
 
 TEST_CASE("the sorting keys span the bounding box: its corners take the curve's octants in order") {
-  // hilbert_keys (16 bits per axis over the box, the key's top 32 bits): the first level of
+  // hilbert_keys (12 bits per axis over the box, the key's top 32 bits): the first level of
   // the curve visits the eight octants one after another, each next to the one before, so
   // the corners' top 3 bits are 0..7 and corners of consecutive octants share two
   // coordinates. Keys cut from the wrong bits of the index, or a grid not scaled to the

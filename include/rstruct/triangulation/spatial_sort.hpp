@@ -41,7 +41,7 @@ std::vector<std::uint32_t> brio_order(std::span<const Point3> points, std::uint6
                                       std::size_t min_round = 256, unsigned threads = 1,
                                       std::vector<std::uint32_t>* keys = nullptr);
 
-/// The top 32 bits of the Hilbert keys brio_order() sorts each round by (16 bits per axis
+/// The top 32 bits of the Hilbert keys brio_order() sorts each round by (12 bits per axis
 /// over the bounding box of `points`), one per point: points in the same order along the
 /// curve have non-decreasing keys. The parallel construction partitions space with them.
 /// \pre every coordinate finite.
