@@ -17,7 +17,8 @@ constexpr int kBits = 21;
 /// triangulate; 10^7 points on a surface still have more than one cell each) with the round
 /// above it. The curve is hierarchical (a finer key begins with the coarser one), so points
 /// in distinct cells come in the same order as with 16 bits, which took a quarter more
-/// steps per key and a fifth radix pass (10^6 uniform points, one thread, 5 pairs: sort 0.078-0.081 -> 0.069-0.071 s).
+/// steps per key and a fifth radix pass (10^6 uniform points, one thread, 5 pairs: sort
+/// 0.078-0.081 -> 0.069-0.071 s).
 constexpr int kSortBits = 12;
 constexpr int kRoundShift = 3 * kSortBits;
 
